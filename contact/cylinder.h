@@ -1,0 +1,35 @@
+// A rigid circular cylinder with any axis, whose radius the load steps grow (the paper's
+// Section 4.3: the cylinder is scaled radially once the garment has settled).
+#pragma once
+
+#include "contact/rigid_body.h"
+
+namespace tightfit {
+
+class Cylinder final : public RigidBody {
+ public:
+  // Infinite for contact; `display_height_m` only sets how much of it is drawn.
+  Cylinder(const Vec3& point_on_axis_m, const Vec3& axis, double radius_m,
+           double display_height_m = 0.24);
+
+  std::string name() const override { return "cylinder"; }
+  SurfacePoint query(const Vec3& x) const override;
+  DisplayMesh display_mesh() const override;
+
+  void set_radius(double radius_m);  // throws std::invalid_argument unless positive
+  double radius_m() const { return radius_m_; }
+  const Vec3& axis() const { return axis_; }
+  const Vec3& point_on_axis_m() const { return point_; }
+  // Unit vector normal to the axis from which angles round the cylinder are measured.
+  Vec3 reference_direction() const;
+  // Angle of x round the axis from reference_direction(), degrees in [0, 360).
+  double angle_deg(const Vec3& x) const;
+
+ private:
+  Vec3 point_;
+  Vec3 axis_;
+  double radius_m_;
+  double display_height_m_;
+};
+
+}  // namespace tightfit

@@ -1,0 +1,29 @@
+#include "contact/penalty_contact.h"
+
+namespace tightfit {
+
+double penalty_stiffness_Pa_per_m(double penalty_factor, double stiffness_scale_N_per_m,
+                                  double mean_edge_length_m) {
+  return penalty_factor * stiffness_scale_N_per_m / (mean_edge_length_m * mean_edge_length_m);
+}
+
+Vec3 penalty_force_N(const SurfacePoint& s, double stiffness_Pa_per_m, double rest_area_m2) {
+  if (s.signed_distance_m >= 0.0) return Vec3::Zero();
+  return (-s.signed_distance_m * stiffness_Pa_per_m * rest_area_m2) * s.outward_normal;
+}
+
+void apply_penalty_contact(const RigidBody& body, double stiffness_Pa_per_m,
+                           const std::vector<double>& rest_vertex_area_m2, SurfaceState& state) {
+  const std::size_t n = state.positions_m.size();
+  state.contact_force_N.assign(n, Vec3::Zero());
+  state.in_contact.assign(n, 0);
+  state.gap_m.assign(n, 0.0);
+  for (std::size_t v = 0; v < n; ++v) {
+    const SurfacePoint s = body.query(state.positions_m[v]);
+    state.gap_m[v] = s.signed_distance_m;
+    state.in_contact[v] = s.signed_distance_m < 0.0;
+    state.contact_force_N[v] = penalty_force_N(s, stiffness_Pa_per_m, rest_vertex_area_m2[v]);
+  }
+}
+
+}  // namespace tightfit

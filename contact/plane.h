@@ -1,0 +1,22 @@
+// A rigid half-space bounded by a plane (a floor, a table).
+#pragma once
+
+#include "contact/rigid_body.h"
+
+namespace tightfit {
+
+class Plane final : public RigidBody {
+ public:
+  // The body is the side opposite to `outward_normal`.
+  Plane(const Vec3& point_m, const Vec3& outward_normal, double display_size_m = 0.5);
+  std::string name() const override { return "plane"; }
+  SurfacePoint query(const Vec3& x) const override;
+  DisplayMesh display_mesh() const override;
+
+ private:
+  Vec3 point_;
+  Vec3 normal_;
+  double display_size_m_;
+};
+
+}  // namespace tightfit

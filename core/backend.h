@@ -1,0 +1,73 @@
+// The one interface the two cloth backends implement. Everything before it (what is
+// simulated) and after it (what is measured) is shared, so a comparison compares solvers.
+#pragma once
+
+#include "core/garment.h"
+#include "core/material.h"
+#include "core/surface_state.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+class RigidBody;
+
+// Cylinder-theory.md's two end conditions for a tube.
+enum class EndCondition {
+  free_ends,  // no axial force at the tube's ends (the paper's assumption)
+  held_ends,  // the end vertices keep their axial coordinate (axial stretch 1)
+};
+
+// What is simulated: shared by both backends, owned by the caller, alive while they run.
+struct Problem {
+  const SimulationMesh* mesh = nullptr;
+  const MaterialLaw* law = nullptr;
+  const FabricParameters* fabric = nullptr;
+  // The body; the caller changes its shape between load steps.
+  const RigidBody* body = nullptr;
+  // Penalty contact: pressure per unit penetration depth, Pa/m.
+  double contact_stiffness_Pa_per_m = 0.0;
+  // Held ends: these vertices cannot move along held_direction.
+  EndCondition end_condition = EndCondition::free_ends;
+  std::vector<int> held_vertices;
+  Vec3 held_direction = Vec3::UnitZ();
+  // Gravity when a load step turns it on, m/s^2.
+  Vec3 gravity_m_per_s2 = Vec3(0.0, 0.0, -9.81);
+};
+
+struct LoadStep {
+  int index = 0;
+  double alpha = 1.0;  // the body's deformation ratio, for messages
+  bool gravity_on = false;
+};
+
+struct StepReport {
+  bool converged = false;
+  int iterations = 0;        // frames (mass-spring) or Newton steps (FE)
+  double residual_N = 0.0;   // largest residual force on a free vertex at the end
+  double tolerance_N = 0.0;  // the stop rule's threshold
+  double wall_seconds = 0.0;
+  std::string detail;  // one line for the log
+};
+
+// Thrown when a backend cannot reach equilibrium; the message names the step and residual.
+class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;
+  // Positions of the welded vertices to start from, m.
+  virtual void set_positions(const std::vector<Vec3>& positions_m) = 0;
+  // Brings the garment to static equilibrium against the body as it is now.
+  virtual StepReport solve(const LoadStep& step) = 0;
+  // The equilibrium just reached (or the current state after a failure).
+  virtual SurfaceState state() const = 0;
+};
+
+}  // namespace tightfit

@@ -1,0 +1,42 @@
+// Backends register themselves by name (as ASPECT's plugins do); the parameter file picks one.
+#pragma once
+
+#include "core/backend.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace tightfit {
+
+struct BackendEntry {
+  std::string name;
+  std::string description;
+  // Declares the backend's own subsection (for example "Mass spring") in the handler.
+  std::function<void(dealii::ParameterHandler&)> declare_parameters;
+  // Reads that subsection and creates the backend for `problem`.
+  std::function<std::unique_ptr<Backend>(const Problem&, dealii::ParameterHandler&)> create;
+};
+
+class BackendRegistry {
+ public:
+  void add(BackendEntry entry);
+  // Throws std::invalid_argument listing the known names when `name` is unknown.
+  const BackendEntry& find(const std::string& name) const;
+  const std::vector<BackendEntry>& entries() const { return entries_; }
+  // "massspring|fem", for a Patterns::Selection.
+  std::string names_joined(const char* separator) const;
+
+ private:
+  std::vector<BackendEntry> entries_;
+};
+
+// Every backend built into this program (defined where the backends are linked together).
+const BackendRegistry& backend_registry();
+
+}  // namespace tightfit

@@ -1,0 +1,166 @@
+// The three membrane laws of cylinder-theory.md, each written once as an energy W(C).
+#include "core/dual.h"
+#include "core/material.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace tightfit {
+
+void FabricParameters::validate() const {
+  auto require = [](bool ok, const char* entry, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("Material/") + entry + " " + what);
+  };
+  require(stiffness_weft_N_per_m > 0, "Stiffness weft", "must be positive (N/m)");
+  require(stiffness_warp_N_per_m > 0, "Stiffness warp", "must be positive (N/m)");
+  require(shear_stiffness_N_per_m > 0, "Shear stiffness", "must be positive (N/m)");
+  require(thickness_m > 0, "Thickness", "must be positive (m)");
+  require(areal_density_kg_per_m2 > 0, "Areal density", "must be positive (kg/m^2)");
+  require(neo_hookean_shear_modulus_Pa > 0, "Neo-Hookean shear modulus", "must be positive (Pa)");
+  require(poisson_weft_warp >= 0 && poisson_weft_warp * poisson_warp_weft() < 1.0,
+          "Poisson ratio weft-warp", "must be >= 0 with nu12 * nu21 < 1 (positive-definite law)");
+}
+
+namespace {
+
+// Plane-stress orthotropic stiffness in Voigt order (11, 22, 12) with engineering shear.
+struct OrthotropicStiffness {
+  double d11, d12, d22, d33;
+  explicit OrthotropicStiffness(const FabricParameters& f) {
+    const double nu12 = f.poisson_weft_warp;
+    const double nu21 = f.poisson_warp_weft();
+    const double denominator = 1.0 - nu12 * nu21;
+    d11 = f.stiffness_weft_N_per_m / denominator;
+    d22 = f.stiffness_warp_N_per_m / denominator;
+    d12 = nu21 * f.stiffness_weft_N_per_m / denominator;  // = nu12 Y2 / (1 - nu12 nu21)
+    d33 = f.shear_stiffness_N_per_m;
+  }
+  // W = 1/2 e : D : e for a symmetric strain (e11, e22, e12), engineering shear 2 e12.
+  template <class S>
+  S quadratic_energy(const S& e11, const S& e22, const S& e12) const {
+    return 0.5 * (d11 * e11 * e11 + 2.0 * d12 * e11 * e22 + d22 * e22 * e22) +
+           2.0 * d33 * e12 * e12;
+  }
+  double largest() const { return std::max(d11, d22); }
+};
+
+// Linear Biot: nominal stress linear in the Biot strain U - I, U = sqrt(C).
+// In 2D, sqrt(C) = (C + s I) / t with s = sqrt(det C), t = sqrt(tr C + 2 s).
+class LinearBiot {
+ public:
+  explicit LinearBiot(const FabricParameters& f) : stiffness_(f) {}
+  static const char* name() { return "linear biot"; }
+  template <class S>
+  S energy(const S& c11, const S& c22, const S& c12) const {
+    using std::sqrt;  // plain doubles; Dual's overload is found by argument-dependent lookup
+    const S s = sqrt(c11 * c22 - c12 * c12);
+    const S t = sqrt(c11 + c22 + 2.0 * s);
+    return stiffness_.quadratic_energy((c11 + s) / t - 1.0, (c22 + s) / t - 1.0, c12 / t);
+  }
+  double stiffness_scale() const { return stiffness_.largest(); }
+
+ private:
+  OrthotropicStiffness stiffness_;
+};
+
+// St. Venant-Kirchhoff: second Piola-Kirchhoff stress linear in the Green strain (C - I)/2.
+class StVenantKirchhoff {
+ public:
+  explicit StVenantKirchhoff(const FabricParameters& f) : stiffness_(f) {}
+  static const char* name() { return "st venant kirchhoff"; }
+  template <class S>
+  S energy(const S& c11, const S& c22, const S& c12) const {
+    return stiffness_.quadratic_energy(0.5 * (c11 - 1.0), 0.5 * (c22 - 1.0), 0.5 * c12);
+  }
+  double stiffness_scale() const { return stiffness_.largest(); }
+
+ private:
+  OrthotropicStiffness stiffness_;
+};
+
+// Incompressible neo-Hookean membrane: W = G t0 / 2 (tr C + 1/det C - 3); the thickness
+// stretch 1/sqrt(det C) is eliminated by incompressibility (the law behind the paper's Eq. 8).
+class IncompressibleNeoHookean {
+ public:
+  explicit IncompressibleNeoHookean(const FabricParameters& f)
+      : modulus_N_per_m_(f.neo_hookean_shear_modulus_Pa * f.thickness_m) {}
+  static const char* name() { return "neo hookean"; }
+  template <class S>
+  S energy(const S& c11, const S& c22, const S& c12) const {
+    return 0.5 * modulus_N_per_m_ * (c11 + c22 + 1.0 / (c11 * c22 - c12 * c12) - 3.0);
+  }
+  // Small-strain uniaxial membrane stiffness of an incompressible solid: 3 G t0.
+  double stiffness_scale() const { return 3.0 * modulus_N_per_m_; }
+
+ private:
+  double modulus_N_per_m_;
+};
+
+// Differentiates a law's energy: variables v = (C11, C22, C12) with C21 = C12, so that
+// S = (2 dW/dC11, 2 dW/dC22, dW/dC12) and D = M H M with H the Hessian in v, M = diag(2, 2, 1).
+template <class Law>
+class DifferentiatedLaw final : public MaterialLaw {
+ public:
+  explicit DifferentiatedLaw(const FabricParameters& f) : law_(f) {}
+  std::string name() const override { return Law::name(); }
+  double energy(const Mat2& C) const override { return law_.energy(C(0, 0), C(1, 1), C(0, 1)); }
+  Mat2 stress(const Mat2& C) const override {
+    using D1 = Dual<3>;
+    const D1 w =
+        law_.energy(D1::variable(C(0, 0), 0), D1::variable(C(1, 1), 1), D1::variable(C(0, 1), 2));
+    Mat2 S;
+    S << 2.0 * w.grad[0], w.grad[2], w.grad[2], 2.0 * w.grad[1];
+    return S;
+  }
+  Mat3 tangent(const Mat2& C) const override {
+    using D1 = Dual<3>;
+    using D2 = Dual<3, D1>;
+    const double c[3] = {C(0, 0), C(1, 1), C(0, 1)};
+    D2 v[3];
+    for (int i = 0; i < 3; ++i) v[i] = D2::variable(D1::variable(c[i], i), i);
+    const D2 w = law_.energy(v[0], v[1], v[2]);
+    const double m[3] = {2.0, 2.0, 1.0};
+    Mat3 D;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) D(i, j) = m[i] * m[j] * w.grad[i].grad[j];
+    return D;
+  }
+  double stiffness_scale() const override { return law_.stiffness_scale(); }
+
+ private:
+  Law law_;
+};
+
+}  // namespace
+
+std::vector<std::string> material_law_names() {
+  return {LinearBiot::name(), StVenantKirchhoff::name(), IncompressibleNeoHookean::name()};
+}
+
+std::string material_law_descriptions() {
+  std::ostringstream out;
+  out << "'linear biot': nominal stress linear in the Biot strain U - I (orthotropic; with zero "
+         "Poisson ratio the paper's Eq. 7 holds exactly); "
+      << "'st venant kirchhoff': 2nd Piola-Kirchhoff stress linear in the Green strain "
+         "(orthotropic); "
+      << "'neo hookean': incompressible, isotropic, shear modulus and thickness (the paper's "
+         "Eq. 8)";
+  return out.str();
+}
+
+std::unique_ptr<MaterialLaw> make_material_law(const std::string& name,
+                                               const FabricParameters& fabric) {
+  fabric.validate();
+  if (name == LinearBiot::name()) return std::make_unique<DifferentiatedLaw<LinearBiot>>(fabric);
+  if (name == StVenantKirchhoff::name())
+    return std::make_unique<DifferentiatedLaw<StVenantKirchhoff>>(fabric);
+  if (name == IncompressibleNeoHookean::name())
+    return std::make_unique<DifferentiatedLaw<IncompressibleNeoHookean>>(fabric);
+  std::string known;
+  for (const auto& n : material_law_names()) known += " '" + n + "'";
+  throw std::invalid_argument("Material/Law: unknown law '" + name + "'; known:" + known);
+}
+
+}  // namespace tightfit

@@ -1,0 +1,75 @@
+#include "core/rectangle_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tightfit {
+
+void MeshSpacing::validate() const {
+  if (!(along_x_m > 0) || !(along_y_m > 0))
+    throw std::invalid_argument("Garment/Edge length: both edge lengths must be positive (m)");
+}
+
+namespace {
+
+// Joins two rows of vertices (sorted by x, same first and last x) by a strip of triangles,
+// each step adding the shorter of the two possible diagonals (the Delaunay choice here).
+void zip_rows(const std::vector<int>& lower, const std::vector<int>& upper,
+              const std::vector<Vec2>& x, std::vector<Triangle>& triangles) {
+  std::size_t a = 0, b = 0;
+  while (a + 1 < lower.size() || b + 1 < upper.size()) {
+    const bool advance_lower =
+        b + 1 == upper.size() ||
+        (a + 1 < lower.size() && (x[lower[a + 1]] - x[upper[b]]).squaredNorm() <=
+                                     (x[lower[a]] - x[upper[b + 1]]).squaredNorm());
+    if (advance_lower) {
+      triangles.push_back({lower[a], lower[a + 1], upper[b]});
+      ++a;
+    } else {
+      triangles.push_back({lower[a], upper[b + 1], upper[b]});
+      ++b;
+    }
+  }
+}
+
+}  // namespace
+
+Panel make_rectangle_panel(const std::string& name, double width_m, double height_m,
+                           const MeshSpacing& spacing) {
+  spacing.validate();
+  if (!(width_m > 0) || !(height_m > 0))
+    throw std::invalid_argument("panel '" + name + "': width and height must be positive (m)");
+  const int nx = std::max(1, static_cast<int>(std::lround(width_m / spacing.along_x_m)));
+  const int ny = std::max(1, static_cast<int>(std::lround(height_m / spacing.along_y_m)));
+  const double dx = width_m / nx, dy = height_m / ny;
+
+  Panel panel;
+  panel.name = name;
+  std::vector<std::vector<int>> rows(ny + 1);
+  for (int j = 0; j <= ny; ++j) {
+    auto add = [&](double xx) {
+      rows[j].push_back(static_cast<int>(panel.rest_positions_m.size()));
+      panel.rest_positions_m.emplace_back(xx, j * dy);
+    };
+    if (j % 2 == 0) {
+      for (int i = 0; i <= nx; ++i) add(i * dx);
+    } else {
+      add(0.0);
+      for (int i = 0; i < nx; ++i) add((i + 0.5) * dx);
+      add(width_m);
+    }
+  }
+  for (int j = 0; j < ny; ++j)
+    zip_rows(rows[j], rows[j + 1], panel.rest_positions_m, panel.triangles);
+
+  for (const auto& row : rows) {
+    panel.edges["left"].push_back(row.front());
+    panel.edges["right"].push_back(row.back());
+  }
+  panel.edges["bottom"] = rows.front();
+  panel.edges["top"] = rows.back();
+  return panel;
+}
+
+}  // namespace tightfit
