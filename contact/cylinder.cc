@@ -1,5 +1,7 @@
 #include "contact/cylinder.h"
 
+#include <Eigen/Geometry>  // Vec3::cross
+
 #include <cmath>
 #include <stdexcept>
 

@@ -1,5 +1,7 @@
 #include "contact/plane.h"
 
+#include <Eigen/Geometry>  // Vec3::cross
+
 #include <stdexcept>
 
 namespace tightfit {
