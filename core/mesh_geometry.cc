@@ -23,15 +23,53 @@ std::vector<double> triangle_areas(const std::vector<Triangle>& triangles,
 }
 
 const char* to_string(VertexAreaDefinition definition) {
-  return definition == VertexAreaDefinition::barycentric ? "barycentric" : "adjacent triangles";
+  switch (definition) {
+    case VertexAreaDefinition::barycentric:
+      return "barycentric";
+    case VertexAreaDefinition::adjacent_triangles:
+      return "adjacent triangles";
+    case VertexAreaDefinition::mixed_voronoi:
+      return "mixed voronoi";
+  }
+  return "unknown";
 }
+
+namespace {
+// Meyer et al. 2003, Fig. 4: each corner's Voronoi share of one triangle, or A/2 for the obtuse
+// corner and A/4 for the others when the triangle is obtuse.
+void add_mixed_voronoi_areas(const Vec3& x0, const Vec3& x1, const Vec3& x2, double area,
+                             double& a0, double& a1, double& a2) {
+  const Vec3 e0 = x2 - x1, e1 = x0 - x2, e2 = x1 - x0;                // edge opposite each corner
+  const double d0 = -e1.dot(e2), d1 = -e2.dot(e0), d2 = -e0.dot(e1);  // |.|^2 cos(corner)
+  if (d0 < 0 || d1 < 0 || d2 < 0) {
+    a0 += area * (d0 < 0 ? 0.5 : 0.25);
+    a1 += area * (d1 < 0 ? 0.5 : 0.25);
+    a2 += area * (d2 < 0 ? 0.5 : 0.25);
+    return;
+  }
+  // cot(corner) = cos / sin = d / (2 area); corner i gets (|e_j|^2 cot_j + |e_k|^2 cot_k) / 8.
+  const double c0 = d0 / (2 * area), c1 = d1 / (2 * area), c2 = d2 / (2 * area);
+  a0 += (e1.squaredNorm() * c1 + e2.squaredNorm() * c2) / 8.0;
+  a1 += (e2.squaredNorm() * c2 + e0.squaredNorm() * c0) / 8.0;
+  a2 += (e0.squaredNorm() * c0 + e1.squaredNorm() * c1) / 8.0;
+}
+}  // namespace
 
 std::vector<double> vertex_areas(const std::vector<Triangle>& triangles,
                                  const std::vector<Vec3>& positions_m, int n_vertices,
                                  VertexAreaDefinition definition) {
-  const double share = definition == VertexAreaDefinition::barycentric ? 1.0 / 3.0 : 1.0;
   std::vector<double> areas(n_vertices, 0.0);
   const auto triangle_area = triangle_areas(triangles, positions_m);
+  if (definition == VertexAreaDefinition::mixed_voronoi) {
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+      const Triangle& t = triangles[k];
+      if (triangle_area[k] > 0)
+        add_mixed_voronoi_areas(positions_m[t[0]], positions_m[t[1]], positions_m[t[2]],
+                                triangle_area[k], areas[t[0]], areas[t[1]], areas[t[2]]);
+    }
+    return areas;
+  }
+  const double share = definition == VertexAreaDefinition::barycentric ? 1.0 / 3.0 : 1.0;
   for (std::size_t k = 0; k < triangles.size(); ++k)
     for (int v : triangles[k]) areas[v] += share * triangle_area[k];
   return areas;

@@ -20,6 +20,12 @@ enum class VertexAreaDefinition {
   // The whole of each adjacent triangle, as the paper's Section 2.2 defines it: the areas sum
   // to three times the mesh area, so the pressure reads a third (cylinder-theory.md).
   adjacent_triangles,
+  // The mixed Voronoi area (Meyer, Desbrun, Schroeder and Barr, "Discrete differential-geometry
+  // operators for triangulated 2-manifolds", 2003, Fig. 4): the part of each adjacent triangle
+  // nearer to the vertex than to the other corners (a half or a quarter of an obtuse
+  // triangle). Sums to the mesh area like the barycentric area, but follows the vertex's true
+  // share where the mesh spacing changes (a row that closes with a half-spacing vertex).
+  mixed_voronoi,
 };
 const char* to_string(VertexAreaDefinition definition);
 

@@ -1,0 +1,244 @@
+#include "massspring/massspring_backend.h"
+
+#include "contact/penalty_contact.h"
+#include "contact/rigid_body.h"
+#include "massspring/lumped_mass.h"
+#include "massspring/stable_time_step.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+
+const Problem& checked(const Problem& problem) {
+  if (!problem.mesh || !problem.law || !problem.fabric)
+    throw std::invalid_argument("mass spring: the problem needs a mesh, a law and a fabric");
+  if (problem.contact_stiffness_Pa_per_m < 0)
+    throw std::invalid_argument("mass spring: the contact stiffness must be >= 0 (Pa/m)");
+  return problem;
+}
+
+std::string step_name(const LoadStep& step) {
+  std::ostringstream out;
+  out << "load step " << step.index << " (alpha " << step.alpha << ")";
+  return out.str();
+}
+
+}  // namespace
+
+MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringParameters& parameters)
+    : problem_(checked(problem)),
+      parameters_(parameters),
+      elements_(*problem.mesh, *problem.law),
+      hinges_(*problem.mesh, parameters.bending_rigidity_N_m) {
+  parameters_.validate();
+  const SimulationMesh& mesh = *problem_.mesh;
+  const int n = mesh.n_vertices;
+  mass_kg_ = lumped_masses_kg(mesh, problem_.fabric->areal_density_kg_per_m2);
+  rest_vertex_area_m2_ = rest_vertex_areas_m2(mesh);
+  held_.assign(n, 0);
+  for (int v : problem_.held_vertices) {
+    if (v < 0 || v >= n)
+      throw std::invalid_argument("mass spring: held vertex " + std::to_string(v) +
+                                  " is not a vertex of the mesh");
+    held_[v] = 1;
+  }
+  if (!problem_.held_vertices.empty() && !(problem_.held_direction.norm() > 0))
+    throw std::invalid_argument("mass spring: the held direction is zero");
+  held_direction_ =
+      problem_.held_vertices.empty() ? Vec3::UnitZ() : Vec3(problem_.held_direction.normalized());
+  // Stop rule (architecture.md): a force relative to the tension scale Y h.
+  tolerance_N_ = parameters_.relative_tolerance * problem_.law->stiffness_scale() *
+                 mean_rest_edge_length_m(mesh);
+  size_m_ = std::sqrt(rest_area(mesh));
+
+  // Until the caller places it, the garment lies flat in its layout plane.
+  x_.assign(n, Vec3::Zero());
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
+    const Vec2& p = mesh.layout_positions_m[u];
+    x_[mesh.welded_index[u]] = Vec3(p.x(), p.y(), 0.0);
+  }
+  v_.assign(n, Vec3::Zero());
+  for (auto* buffer : {&force_, &stage_x_, &stage_v_, &sum_x_, &sum_v_})
+    buffer->assign(n, Vec3::Zero());
+}
+
+void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
+  if (static_cast<int>(positions_m.size()) != problem_.mesh->n_vertices)
+    throw std::invalid_argument("mass spring: set_positions got " +
+                                std::to_string(positions_m.size()) + " positions for " +
+                                std::to_string(problem_.mesh->n_vertices) + " vertices");
+  x_ = positions_m;
+  std::fill(v_.begin(), v_.end(), Vec3::Zero());
+  placed_ = true;
+}
+
+void MassSpringBackend::internal_forces(const std::vector<Vec3>& x,
+                                        std::vector<Vec3>& force) const {
+  std::fill(force.begin(), force.end(), Vec3::Zero());
+  elements_.add_forces(x, force);
+  hinges_.add_forces(x, force);
+}
+
+double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravity_on,
+                                          std::vector<Vec3>& force) const {
+  internal_forces(x, force);
+  const std::size_t n = x.size();
+  const RigidBody* body = problem_.body;
+  const double k = problem_.contact_stiffness_Pa_per_m;
+  double largest_squared = 0.0, total_squared = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (body && k > 0) force[i] += penalty_force_N(body->query(x[i]), k, rest_vertex_area_m2_[i]);
+    if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
+    if (held_[i]) remove_held_component(force[i]);
+    const double squared = force[i].squaredNorm();
+    largest_squared = std::max(largest_squared, squared);
+    total_squared += squared;  // std::max drops NaN; a sum keeps it
+  }
+  return std::isfinite(total_squared) ? std::sqrt(largest_squared)
+                                      : std::numeric_limits<double>::quiet_NaN();
+}
+
+double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double stop_below_N) {
+  // Classical RK4 on y = (x, v), y' = (v, f(x)/m - c v): stages accumulate into sum_x_,
+  // sum_v_ with weights 1, 2, 2, 1 so no per-stage copies are kept.
+  const std::size_t n = x_.size();
+  const double stage_step[3] = {0.5 * dt, 0.5 * dt, dt};
+  const double weight[4] = {1.0, 2.0, 2.0, 1.0};
+  double residual = 0.0;
+  for (int stage = 0; stage < 4; ++stage) {
+    const std::vector<Vec3>& xs = stage == 0 ? x_ : stage_x_;
+    const std::vector<Vec3>& vs = stage == 0 ? v_ : stage_v_;
+    const double r = residual_forces(xs, gravity_on, force_);
+    if (stage == 0) {
+      residual = r;
+      // The state is already stable (or broken): leave it as it is.
+      if (!(r >= stop_below_N) || !std::isfinite(r)) return r;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 velocity = vs[i];
+      const Vec3 acceleration = force_[i] / mass_kg_[i] - c * velocity;
+      if (stage == 0) {
+        sum_x_[i] = velocity;
+        sum_v_[i] = acceleration;
+      } else {
+        sum_x_[i] += weight[stage] * velocity;
+        sum_v_[i] += weight[stage] * acceleration;
+      }
+      if (stage < 3) {
+        stage_x_[i] = x_[i] + stage_step[stage] * velocity;
+        stage_v_[i] = v_[i] + stage_step[stage] * acceleration;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    x_[i] += (dt / 6.0) * sum_x_[i];
+    v_[i] += (dt / 6.0) * sum_v_[i];
+    if (held_[i]) remove_held_component(v_[i]);
+  }
+  return residual;
+}
+
+double MassSpringBackend::choose_time_step_s() const {
+  if (parameters_.time_step_s > 0) return parameters_.time_step_s;
+  // Every particle counts its penalty spring whether it touches the body now or not: it may
+  // touch it during the step.
+  std::vector<double> stiffness(x_.size(), 0.0);
+  elements_.add_stiffness_bounds(x_, stiffness);
+  hinges_.add_stiffness_bounds(x_, stiffness);
+  if (problem_.body)
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
+  return stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety);
+}
+
+StepReport MassSpringBackend::solve(const LoadStep& step) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!placed_ && parameters_.placement == Placement::flat_panels) place_flat_panels(step);
+  placed_ = true;
+
+  time_step_s_ = choose_time_step_s();
+  damping_per_s_ = parameters_.damping_per_s > 0
+                       ? parameters_.damping_per_s
+                       : critical_damping_per_s(problem_.law->stiffness_scale(),
+                                                problem_.fabric->areal_density_kg_per_m2, size_m_);
+  const std::vector<Vec3> start_x = x_;
+  // Particles that run further than this from where the step began have diverged.
+  const double runaway_m = 10.0 * size_m_;
+  std::fill(v_.begin(), v_.end(), Vec3::Zero());
+
+  auto fail = [&](const std::string& what, int frame, double residual) {
+    std::ostringstream message;
+    message << "mass spring: " << step_name(step) << " " << what << " at frame " << frame
+            << " (residual " << residual << " N, tolerance " << tolerance_N_ << " N, time step "
+            << time_step_s_ << " s)";
+    return SolverError(message.str());
+  };
+
+  int frame = 0;
+  double residual = 0.0;
+  for (;;) {
+    // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
+    const bool quasi_static = frame < parameters_.quasi_static_frames;
+    if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
+    residual =
+        rk4_frame(time_step_s_, quasi_static ? 0.0 : damping_per_s_, step.gravity_on, tolerance_N_);
+    if (!std::isfinite(residual))
+      throw fail("diverged (non-finite force; try a smaller Mass spring/Time step)", frame,
+                 residual);
+    if (residual < tolerance_N_) break;  // rk4_frame left the stable state untouched
+    ++frame;
+    if (frame % 64 == 0)
+      for (std::size_t i = 0; i < x_.size(); ++i)
+        if (!((x_[i] - start_x[i]).norm() < runaway_m))
+          throw fail("diverged (vertex " + std::to_string(i) + " ran away)", frame, residual);
+    if (frame >= parameters_.maximum_frames) {
+      residual = residual_forces(x_, step.gravity_on, force_);
+      if (residual < tolerance_N_) break;
+      throw fail("did not reach equilibrium within Mass spring/Maximum frames", frame, residual);
+    }
+  }
+
+  StepReport report;
+  report.converged = true;
+  report.iterations = frame;
+  report.residual_N = residual;
+  report.tolerance_N = tolerance_N_;
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::ostringstream detail;
+  detail << "mass spring: " << step_name(step) << " stable after " << frame << " frames ("
+         << std::min(frame, parameters_.quasi_static_frames) << " quasi-static), dt "
+         << time_step_s_ << " s, damping " << damping_per_s_ << " 1/s, residual " << residual
+         << " N < " << tolerance_N_ << " N, " << report.wall_seconds << " s";
+  report.detail = detail.str();
+  return report;
+}
+
+SurfaceState MassSpringBackend::state() const {
+  SurfaceState s;
+  s.positions_m = x_;
+  s.internal_force_N.assign(x_.size(), Vec3::Zero());
+  internal_forces(x_, s.internal_force_N);
+  if (problem_.body) {
+    apply_penalty_contact(*problem_.body, problem_.contact_stiffness_Pa_per_m, rest_vertex_area_m2_,
+                          s);
+  } else {
+    s.contact_force_N.assign(x_.size(), Vec3::Zero());
+    s.in_contact.assign(x_.size(), 0);
+    s.gap_m.assign(x_.size(), 0.0);
+  }
+  return s;
+}
+
+void MassSpringBackend::place_flat_panels(const LoadStep& step) {
+  throw SolverError("mass spring: " + step_name(step) + ": flat-panel placement needs a cylinder");
+}
+
+}  // namespace tightfit

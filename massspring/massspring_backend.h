@@ -1,0 +1,74 @@
+// The paper's mass-spring backend (Section 2.1): particles with lumped mass, Volino's triangle
+// elements, angular bending springs, penalty contact from contact/, integrated by
+// fourth-order Runge-Kutta with mass-proportional damping after the paper's quasi-static
+// start (velocity ignored). Time integration is only the road to the static equilibrium:
+// a load step ends when the largest residual force is below a tolerance relative to the
+// garment's tension scale.
+#pragma once
+
+#include "core/backend.h"
+#include "massspring/bending_hinges.h"
+#include "massspring/massspring_parameters.h"
+#include "massspring/triangle_elements.h"
+
+#include <vector>
+
+namespace tightfit {
+
+class MassSpringBackend final : public Backend {
+ public:
+  // `problem` (and everything it points to) must outlive the backend. Throws
+  // std::invalid_argument when the problem is incomplete or a parameter is out of range.
+  MassSpringBackend(const Problem& problem, const MassSpringParameters& parameters);
+
+  std::string name() const override { return "massspring"; }
+  void set_positions(const std::vector<Vec3>& positions_m) override;
+  StepReport solve(const LoadStep& step) override;
+  SurfaceState state() const override;
+
+  // Particle masses, kg.
+  const std::vector<double>& masses_kg() const { return mass_kg_; }
+  // The stop rule's threshold, N.
+  double tolerance_N() const { return tolerance_N_; }
+  // The time step and damping of the last load step, s and 1/s.
+  double time_step_s() const { return time_step_s_; }
+  double damping_per_s() const { return damping_per_s_; }
+
+ private:
+  // Residual force on every particle (internal + contact + gravity when on, held components
+  // removed) into `force`; returns the largest magnitude, N.
+  double residual_forces(const std::vector<Vec3>& x, bool gravity_on,
+                         std::vector<Vec3>& force) const;
+  // Internal (membrane + bending) force on every particle into `force`, N.
+  void internal_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const;
+  // One RK4 frame of x' = v, v' = f(x)/m - c v from (x_, v_). Returns the residual force at
+  // the frame's start (its first stage), N; when that is below stop_below_N (or not finite)
+  // the state is left untouched.
+  double rk4_frame(double dt_s, double damping_per_s, bool gravity_on, double stop_below_N);
+  double choose_time_step_s() const;
+  void remove_held_component(Vec3& vector) const {
+    vector -= vector.dot(held_direction_) * held_direction_;
+  }
+  // The paper's placement: closes the seams of flat panels round a cylinder.
+  void place_flat_panels(const LoadStep& step);
+
+  Problem problem_;
+  MassSpringParameters parameters_;
+  TriangleElements elements_;
+  BendingHinges hinges_;
+  std::vector<double> mass_kg_;
+  std::vector<double> rest_vertex_area_m2_;
+  std::vector<char> held_;
+  Vec3 held_direction_;
+  double tolerance_N_ = 0.0;
+  double size_m_ = 0.0;  // the garment's rest size, sqrt(rest area)
+  double time_step_s_ = 0.0;
+  double damping_per_s_ = 0.0;
+  bool placed_ = false;
+
+  std::vector<Vec3> x_, v_;
+  // RK4 work space, allocated once.
+  mutable std::vector<Vec3> force_, stage_x_, stage_v_, sum_x_, sum_v_;
+};
+
+}  // namespace tightfit

@@ -1,0 +1,29 @@
+#include "massspring/massspring_entry.h"
+
+#include "massspring/massspring_backend.h"
+#include "massspring/massspring_parameters.h"
+
+#include <memory>
+
+namespace tightfit {
+
+BackendEntry massspring_backend_entry() {
+  BackendEntry entry;
+  entry.name = "massspring";
+  entry.description =
+      "The paper's mass-spring model (Section 2.1): lumped particles, Volino triangle "
+      "elements, angular bending springs, RK4 with a quasi-static start; settings in the "
+      "subsection 'Mass spring'.";
+  entry.declare_parameters = [](dealii::ParameterHandler& prm) {
+    MassSpringParameters::declare_parameters(prm);
+  };
+  entry.create = [](const Problem& problem,
+                    dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
+    MassSpringParameters parameters;
+    parameters.parse_parameters(prm);
+    return std::make_unique<MassSpringBackend>(problem, parameters);
+  };
+  return entry;
+}
+
+}  // namespace tightfit

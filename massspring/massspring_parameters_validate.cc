@@ -1,0 +1,30 @@
+// The checks of the mass-spring settings, kept apart from the deal.II parameter file code so
+// that programs using the backend without a parameter file do not link deal.II.
+#include "massspring/massspring_parameters.h"
+
+#include <stdexcept>
+
+namespace tightfit {
+
+const char* to_string(Placement placement) {
+  return placement == Placement::sewn_tube ? "sewn tube" : "flat panels";
+}
+
+void MassSpringParameters::validate() const {
+  auto require = [](bool ok, const char* entry, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("Mass spring/") + entry + " " + what);
+  };
+  require(time_step_s >= 0, "Time step", "must be >= 0 (s; 0 = automatic)");
+  require(time_step_safety > 0 && time_step_safety <= 1.2, "Time step safety",
+          "must be in (0, 1.2]");
+  require(damping_per_s >= 0, "Damping", "must be >= 0 (1/s; 0 = automatic)");
+  require(quasi_static_frames >= 0, "Quasi-static frames", "must be >= 0");
+  require(relative_tolerance > 0 && relative_tolerance < 1, "Relative tolerance",
+          "must be in (0, 1)");
+  require(maximum_frames > 0, "Maximum frames", "must be positive");
+  require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");
+  require(placement_gap_m > 0, "Placement gap", "must be positive (m)");
+  require(seam_stiffness_factor > 0, "Seam stiffness factor", "must be positive");
+}
+
+}  // namespace tightfit

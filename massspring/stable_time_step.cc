@@ -1,0 +1,27 @@
+#include "massspring/stable_time_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tightfit {
+
+double stable_time_step_s(const std::vector<double>& stiffness_N_per_m,
+                          const std::vector<double>& mass_kg, double safety) {
+  double omega_squared_max = 0.0;
+  for (std::size_t i = 0; i < mass_kg.size() && i < stiffness_N_per_m.size(); ++i)
+    if (mass_kg[i] > 0)
+      omega_squared_max = std::max(omega_squared_max, stiffness_N_per_m[i] / mass_kg[i]);
+  if (!(omega_squared_max > 0) || !std::isfinite(omega_squared_max))
+    throw std::invalid_argument(
+        "mass spring: cannot choose a time step (no particle has mass and stiffness); set "
+        "Mass spring/Time step");
+  return safety * 2.0 * std::sqrt(2.0) / std::sqrt(omega_squared_max);
+}
+
+double critical_damping_per_s(double stiffness_N_per_m, double areal_density_kg_per_m2,
+                              double size_m) {
+  return 2.0 * M_PI * std::sqrt(stiffness_N_per_m / areal_density_kg_per_m2) / size_m;
+}
+
+}  // namespace tightfit

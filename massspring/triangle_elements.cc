@@ -1,0 +1,71 @@
+#include "massspring/triangle_elements.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tightfit {
+
+TriangleElements::TriangleElements(const SimulationMesh& mesh, const MaterialLaw& law) : law_(law) {
+  elements_.reserve(mesh.triangles.size());
+  for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const auto& X = mesh.rest_triangles[k];
+    Mat2 dX;
+    dX.col(0) = X[1] - X[0];
+    dX.col(1) = X[2] - X[0];
+    const double doubled_area = dX.determinant();
+    if (!(doubled_area > 0))
+      throw std::invalid_argument("mass spring: triangle " + std::to_string(k) +
+                                  " has no positive rest area (degenerate or clockwise panel)");
+    // F = [x1 - x0, x2 - x0] dX^-1: the rows of dX^-1 are g1 and g2, and g0 = -(g1 + g2).
+    const Mat2 inverse = dX.inverse();
+    Element e;
+    e.vertex = mesh.triangles[k];
+    e.gradient[1] = inverse.row(0).transpose();
+    e.gradient[2] = inverse.row(1).transpose();
+    e.gradient[0] = -(e.gradient[1] + e.gradient[2]);
+    e.rest_area_m2 = 0.5 * doubled_area;
+    elements_.push_back(e);
+  }
+}
+
+double TriangleElements::energy_J(const std::vector<Vec3>& x) const {
+  double energy = 0.0;
+  for (const Element& e : elements_) {
+    const Mat32 F = deformation_gradient(e, x);
+    energy += e.rest_area_m2 * law_.energy(F.transpose() * F);
+  }
+  return energy;
+}
+
+void TriangleElements::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force_N) const {
+  for (const Element& e : elements_) {
+    const Mat32 F = deformation_gradient(e, x);
+    // First Piola-Kirchhoff membrane stress P = F S (N/m), scaled by the rest area.
+    const Mat32 AP = e.rest_area_m2 * (F * law_.stress(F.transpose() * F));
+    for (int i = 0; i < 3; ++i) force_N[e.vertex[i]] -= AP * e.gradient[i];
+  }
+}
+
+void TriangleElements::add_stiffness_bounds(const std::vector<Vec3>& x,
+                                            std::vector<double>& stiffness_N_per_m) const {
+  for (const Element& e : elements_) {
+    const Mat32 F = deformation_gradient(e, x);
+    const Mat2 C = F.transpose() * F;
+    // d f_i / d x_j = -A0 [ (g_i^T S g_j) I + F-weighted material term ]; bound both by norms:
+    // |material| <= ||D||_inf |F|^2 |g_i| |g_j|, |geometric| <= ||S|| |g_i| |g_j|.
+    const Mat3 D = law_.tangent(C);
+    const double material = D.cwiseAbs().rowwise().sum().maxCoeff() * F.squaredNorm();
+    const double geometric = law_.stress(C).cwiseAbs().rowwise().sum().maxCoeff();
+    const double modulus = std::max(material, law_.stiffness_scale()) + geometric;
+    double gradient_sum = 0.0;
+    for (int j = 0; j < 3; ++j) gradient_sum += e.gradient[j].norm();
+    for (int i = 0; i < 3; ++i)
+      stiffness_N_per_m[e.vertex[i]] +=
+          e.rest_area_m2 * modulus * e.gradient[i].norm() * gradient_sum;
+  }
+}
+
+}  // namespace tightfit

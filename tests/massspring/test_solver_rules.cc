@@ -1,0 +1,130 @@
+// The solver's rules: the stop rule is a residual force, gravity and held ends enter the
+// balance, state() separates internal from contact force, and failures throw SolverError
+// naming the step instead of hanging.
+#include "massspring/massspring_entry.h"
+#include "test_meshes.h"
+#include "tube_on_cylinder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tightfit {
+namespace {
+
+TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  MassSpringBackend backend(tube.problem, MassSpringParameters{});
+  backend.set_positions(tube.start_positions());
+  const StepReport report = backend.solve(LoadStep{0, 1.3, false});
+  const SurfaceState s = backend.state();
+  ASSERT_EQ(s.size(), static_cast<std::size_t>(tube.mesh.n_vertices));
+  double largest = 0.0, largest_contact = 0.0;
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    largest = std::max(largest, (s.internal_force_N[v] + s.contact_force_N[v]).norm());
+    largest_contact = std::max(largest_contact, s.contact_force_N[v].norm());
+    // Contact pushes outwards along the radius; the garment pulls inwards.
+    const Vec3 radial = Vec3(s.positions_m[v].x(), s.positions_m[v].y(), 0).normalized();
+    EXPECT_GT(s.contact_force_N[v].dot(radial), 0.0);
+    EXPECT_LT(s.gap_m[v], 0.0);
+  }
+  EXPECT_LT(largest, report.tolerance_N);
+  EXPECT_GT(largest_contact, 100 * report.tolerance_N);
+  // Tolerance: relative tolerance x stiffness scale x mean rest edge length.
+  EXPECT_NEAR(report.tolerance_N,
+              1e-4 * tube.law->stiffness_scale() * mean_rest_edge_length_m(tube.mesh), 1e-15);
+}
+
+TEST(MassSpringSolver, HeldEndsCarryTheWeightOfAHangingTube) {
+  // Gravity on, frictionless cylinder, ends held along z: the held vertices keep their axial
+  // coordinate, and the garment's axial pull on them carries the weight of the free vertices.
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.2 * tube.rest_radius_m());
+  for (const char* edge : {"bottom", "top"})
+    for (int v : tube.mesh.vertex_groups.at(edge)) tube.problem.held_vertices.push_back(v);
+  tube.problem.end_condition = EndCondition::held_ends;
+  tube.problem.held_direction = Vec3::UnitZ();
+  MassSpringBackend backend(tube.problem, MassSpringParameters{});
+  const std::vector<Vec3> start = tube.start_positions();
+  backend.set_positions(start);
+  const StepReport report = backend.solve(LoadStep{0, 1.2, true});
+  const SurfaceState s = backend.state();
+  std::vector<char> held(s.size(), 0);
+  for (int v : tube.problem.held_vertices) held[v] = 1;
+  double free_weight_N = 0.0, held_pull_N = 0.0, sag_m = 0.0;
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    if (held[v]) {
+      EXPECT_DOUBLE_EQ(s.positions_m[v].z(), start[v].z());
+      held_pull_N += s.internal_force_N[v].z();
+    } else {
+      free_weight_N += backend.masses_kg()[v] * 9.81;
+      sag_m = std::max(sag_m, start[v].z() - s.positions_m[v].z());
+    }
+  }
+  EXPECT_GT(sag_m, 0.0);
+  // Sum of all internal forces is zero, so the held vertices feel minus the free ones'
+  // internal force, which balances their weight to within the tolerance per vertex.
+  EXPECT_NEAR(held_pull_N, -free_weight_N, s.size() * report.tolerance_N);
+}
+
+TEST(MassSpringSolver, NonConvergenceThrowsNamingTheStepAndResidual) {
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.5 * tube.rest_radius_m());
+  MassSpringParameters parameters;
+  parameters.maximum_frames = 20;
+  MassSpringBackend backend(tube.problem, parameters);
+  backend.set_positions(tube.start_positions());
+  try {
+    backend.solve(LoadStep{7, 1.5, false});
+    FAIL() << "expected SolverError";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("load step 7"), std::string::npos) << message;
+    EXPECT_NE(message.find("alpha 1.5"), std::string::npos) << message;
+    EXPECT_NE(message.find("residual"), std::string::npos) << message;
+  }
+}
+
+TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.5 * tube.rest_radius_m());
+  MassSpringParameters parameters;
+  parameters.time_step_s = 1e-2;  // far beyond RK4's stability limit for this mesh
+  MassSpringBackend backend(tube.problem, parameters);
+  backend.set_positions(tube.start_positions());
+  try {
+    backend.solve(LoadStep{2, 1.5, false});
+    FAIL() << "expected SolverError";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("diverged"), std::string::npos) << message;
+    EXPECT_NE(message.find("load step 2"), std::string::npos) << message;
+  }
+}
+
+TEST(MassSpringSolver, RestStateIsStableWithoutAFrame) {
+  // A flat panel at its rest shape, no body, no gravity: in equilibrium from the start.
+  const SimulationMesh mesh = test::panel_mesh(0.1, 0.1, MeshSpacing{});
+  const FabricParameters fabric;
+  const auto law = make_material_law("st venant kirchhoff", fabric);
+  Problem problem;
+  problem.mesh = &mesh;
+  problem.law = law.get();
+  problem.fabric = &fabric;
+  MassSpringBackend backend(problem, MassSpringParameters{});
+  backend.set_positions(test::flat_positions(mesh));
+  const StepReport report = backend.solve(LoadStep{0, 1.0, false});
+  EXPECT_EQ(report.iterations, 0);
+  EXPECT_LT(report.residual_N, report.tolerance_N);
+}
+
+TEST(MassSpringEntry, IsRegisteredAsMassspring) {
+  const BackendEntry entry = massspring_backend_entry();
+  EXPECT_EQ(entry.name, "massspring");
+  EXPECT_TRUE(static_cast<bool>(entry.declare_parameters));
+  EXPECT_TRUE(static_cast<bool>(entry.create));
+}
+
+}  // namespace
+}  // namespace tightfit
