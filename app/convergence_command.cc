@@ -1,0 +1,64 @@
+#include "app/convergence_command.h"
+
+#include "app/run_command.h"
+#include "app/summary_table.h"
+#include "cases/case_parameters.h"
+#include "cases/convergence_run.h"
+#include "cases/cylinder_setup.h"
+#include "core/backend_registry.h"
+#include "io/text_table.h"
+
+#include <ostream>
+
+namespace tightfit {
+
+namespace {
+
+TextTable convergence_table(const ConvergenceStudy& study, int n_levels) {
+  TextTable table(
+      "Mesh convergence of the mean pressure (" + std::to_string(n_levels) +
+          " levels, edge halved each level; GCI of the finest, Roache 1994)",
+      {"backend", "step", "alpha", "levels", "edge [mm]", "p fine [Pa]", "p Richardson [Pa]",
+       "theory [Pa]", "order", "GCI [%]", "error fine [%]", "error Richardson [%]", "error order"});
+  for (const ConvergenceSummaryRow& r : study.summary) {
+    const ConvergenceEstimate& e = r.estimate;
+    table.add_row(
+        {r.backend, std::to_string(r.step), format_fixed(r.alpha, 3), std::to_string(e.n_meshes),
+         format_fixed(1e3 * r.edge_fine_m, 2), format_fixed(r.p_fine_Pa, 2),
+         format_fixed(e.extrapolated, 2), format_fixed(r.p_theory_Pa, 2),
+         format_fixed(e.order, 2) + (e.order_observed ? "" : " (assumed)"),
+         format_fixed(100.0 * e.gci_fine, 3), format_fixed(100.0 * r.rel_error_fine, 3),
+         format_fixed(100.0 * r.rel_error_richardson, 3), format_fixed(e.error_order, 2)});
+  }
+  return table;
+}
+
+}  // namespace
+
+int convergence_command(const CommandLine& cl, std::ostream& out) {
+  CaseFile file;
+  file.read(cl.case_files.front(), cl.overrides);
+  const CaseParameters parameters = file.parameters();
+  const std::string dir =
+      output_directory_for(cl, cl.case_files.front(), parameters.output.directory + "_convergence");
+  std::vector<NamedBackendFactory> backends;
+  for (const BackendEntry& entry : backend_registry().entries()) {
+    const std::string name = entry.name;
+    backends.push_back({name, [&file, name](const Problem& problem) {
+                          return file.create_backend(name, problem);
+                        }});
+  }
+  print_case_header(out, cl.case_files.front(), *make_cylinder_setup(parameters));
+  out << "  convergence: " << cl.levels << " levels, mesh scale " << parameters.garment.mesh_scale
+      << " halved each level, on " << backends.size() << " backends (no VTU output)\n";
+
+  const ConvergenceStudy study = run_convergence_study(parameters, cl.levels, backends, dir, out);
+  out << "\n"
+      << convergence_table(study, cl.levels) << "  results in " << dir
+      << "/ (convergence.csv, convergence_summary.csv, <backend>/level_<k>/pressure.csv)\n";
+  for (const BackendConvergence& b : study.backends)
+    if (!b.completed) out << "  " << b.backend << " stopped early: " << b.failure << "\n";
+  return study.completed() ? 0 : 1;
+}
+
+}  // namespace tightfit

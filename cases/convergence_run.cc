@@ -1,0 +1,172 @@
+#include "cases/convergence_run.h"
+
+#include "cases/cylinder_setup.h"
+#include "io/csv_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+
+constexpr double not_defined = std::numeric_limits<double>::quiet_NaN();
+
+// Linear triangles: the pressure error is expected to fall like h^2 (the assumed order when
+// only two levels finished).
+constexpr double formal_order = 2.0;
+
+std::vector<std::string> convergence_columns() {
+  return {"backend", "level", "mesh_scale", "n_vertices",  "edge_m",
+          "step",    "alpha", "p_mean_Pa",  "p_theory_Pa", "rel_error"};
+}
+
+std::vector<std::string> summary_columns() {
+  return {"backend",         "step",      "alpha",         "n_levels",       "edge_fine_m",
+          "ratio",           "p_fine_Pa", "p_theory_Pa",   "observed_order", "order_observed",
+          "p_richardson_Pa", "gci_fine",  "safety_factor", "rel_error_fine", "rel_error_richardson",
+          "error_order"};
+}
+
+// A closed form to measure the error against: the cylinder's, where it predicts contact.
+bool has_closed_form(double p_theory_Pa) {
+  return std::isfinite(p_theory_Pa) && p_theory_Pa > 0;
+}
+
+double relative(double value, double reference) {
+  return has_closed_form(reference) ? (value - reference) / reference : not_defined;
+}
+
+// The case with its edge lengths divided by 2^level and no VTU output.
+CaseParameters level_parameters(const CaseParameters& base, int level) {
+  CaseParameters p = base;
+  const double factor = std::ldexp(1.0, -level);
+  p.garment.mesh_scale *= factor;
+  p.garment.spacing.along_x_m *= factor;  // Mesh scale was applied when the file was read
+  p.garment.spacing.along_y_m *= factor;
+  p.output.write_vtu = false;
+  return p;
+}
+
+BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_levels,
+                                      const NamedBackendFactory& backend,
+                                      const std::string& output_dir, CsvTable& table,
+                                      std::ostream& log) {
+  namespace fs = std::filesystem;
+  BackendConvergence study;
+  study.backend = backend.name;
+  for (int level = 0; level < n_levels; ++level) {
+    auto setup = make_cylinder_setup(level_parameters(parameters, level));
+    ConvergenceLevel l;
+    l.level = level;
+    l.mesh_scale = setup->parameters.garment.mesh_scale;
+    l.n_vertices = setup->mesh.n_vertices;
+    l.edge_m = setup->mean_edge_length_m;
+    log << "Backend " << backend.name << ", level " << level << " (mesh scale " << l.mesh_scale
+        << ", " << l.n_vertices << " vertices, mean edge " << 1e3 * l.edge_m << " mm):\n";
+    const std::string dir =
+        (fs::path(output_dir) / backend.name / ("level_" + std::to_string(level))).string();
+    try {
+      l.run = run_cylinder_case(*setup, backend.create, dir, log);
+    } catch (const std::exception& e) {
+      // A backend that cannot even start (bad subsection, failed allocation) stops its own
+      // study, not the other backends'.
+      l.run.backend = backend.name;
+      l.run.failure = e.what();
+    }
+    for (const StepMeasurement& m : l.run.steps)
+      table.write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step, m.alpha,
+                       m.p_mean_Pa(), m.p_theory_Pa, relative(m.p_mean_Pa(), m.p_theory_Pa)});
+    const bool completed = l.run.completed;
+    const std::string failure = l.run.failure;
+    study.levels.push_back(std::move(l));
+    if (!completed) {
+      study.failure = "level " + std::to_string(level) + ": " + failure;
+      log << "  " << backend.name << ": convergence study stopped at " << study.failure << "\n";
+      return study;
+    }
+  }
+  study.completed = true;
+  return study;
+}
+
+}  // namespace
+
+bool ConvergenceStudy::completed() const {
+  return std::all_of(backends.begin(), backends.end(),
+                     [](const BackendConvergence& b) { return b.completed; });
+}
+
+std::vector<ConvergenceSummaryRow> summarise_convergence(const BackendConvergence& study) {
+  std::vector<ConvergenceSummaryRow> rows;
+  std::size_t n_steps = 0;
+  for (const ConvergenceLevel& l : study.levels) n_steps = std::max(n_steps, l.run.steps.size());
+  for (std::size_t step = 0; step < n_steps; ++step) {
+    // Levels are coarse to fine; a step counts on the levels that finished it.
+    std::vector<double> pressures_Pa, edges_m;
+    for (const ConvergenceLevel& l : study.levels)
+      if (step < l.run.steps.size()) {
+        pressures_Pa.push_back(l.run.steps[step].p_mean_Pa());
+        edges_m.push_back(l.edge_m);
+      }
+    if (pressures_Pa.size() < 2) continue;
+    const std::size_t n = pressures_Pa.size(), used = std::min<std::size_t>(n, 3);
+    // Measured refinement ratio over the levels the estimate uses: whole numbers of divisions
+    // make the mean edge halve only nearly.
+    const double ratio = std::pow(edges_m[n - used] / edges_m[n - 1], 1.0 / (used - 1));
+
+    const StepMeasurement& fine = study.levels[n - 1].run.steps[step];
+    ConvergenceSummaryRow row;
+    row.backend = study.backend;
+    row.step = fine.step;
+    row.alpha = fine.alpha;
+    row.edge_fine_m = edges_m.back();
+    row.ratio = ratio;
+    row.p_fine_Pa = pressures_Pa.back();
+    row.p_theory_Pa = fine.p_theory_Pa;
+    row.estimate = estimate_convergence(
+        pressures_Pa, ratio, formal_order,
+        has_closed_form(fine.p_theory_Pa) ? std::optional<double>(fine.p_theory_Pa) : std::nullopt);
+    row.rel_error_fine = relative(row.p_fine_Pa, row.p_theory_Pa);
+    row.rel_error_richardson = relative(row.estimate.extrapolated, row.p_theory_Pa);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_levels,
+                                       const std::vector<NamedBackendFactory>& backends,
+                                       const std::string& output_dir, std::ostream& log) {
+  namespace fs = std::filesystem;
+  if (n_levels < 2)
+    throw std::invalid_argument("a convergence study needs at least two levels, not " +
+                                std::to_string(n_levels));
+  // Check every level's setup before running any, so a bad mesh scale does not surface after
+  // the coarse levels have run for minutes.
+  for (int level = 0; level < n_levels; ++level)
+    make_cylinder_setup(level_parameters(parameters, level));
+
+  fs::create_directories(output_dir);
+  CsvTable table((fs::path(output_dir) / "convergence.csv").string(), convergence_columns());
+  CsvTable summary((fs::path(output_dir) / "convergence_summary.csv").string(), summary_columns());
+  ConvergenceStudy result;
+  for (const NamedBackendFactory& backend : backends) {
+    result.backends.push_back(
+        run_backend_levels(parameters, n_levels, backend, output_dir, table, log));
+    for (const ConvergenceSummaryRow& r : summarise_convergence(result.backends.back())) {
+      const ConvergenceEstimate& e = r.estimate;
+      summary.write_row({r.backend, r.step, r.alpha, e.n_meshes, r.edge_fine_m, r.ratio,
+                         r.p_fine_Pa, r.p_theory_Pa, e.order, e.order_observed ? 1 : 0,
+                         e.extrapolated, e.gci_fine, e.safety_factor, r.rel_error_fine,
+                         r.rel_error_richardson, e.error_order});
+      result.summary.push_back(r);
+    }
+  }
+  return result;
+}
+
+}  // namespace tightfit

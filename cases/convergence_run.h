@@ -1,0 +1,104 @@
+// Mesh-convergence study of a cylinder case (the paper's Section 7.4, Figure 14): the case
+// run at successively halved edge lengths on each backend, with the observed order, the
+// Richardson-extrapolated pressure and Roache's GCI of every load step.
+//
+// Files written into the output directory (every row flushed as soon as it is known, so a
+// study that stops keeps what it finished):
+//
+// convergence.csv, one row per backend, level and load step (long format):
+//   backend      backend name (as in the registry)
+//   level        0 for the case's own mesh, k for Mesh scale s0 / 2^k
+//   mesh_scale   Garment/Mesh scale used at this level (dimensionless)
+//   n_vertices   welded vertices of the garment mesh
+//   edge_m       mean rest edge length of the mesh, m
+//   step         load step (0 is the settling step)
+//   alpha        r / R0, the cylinder radius over the garment's rest radius
+//   p_mean_Pa    mean contact pressure over the vertices in contact, Pa
+//   p_theory_Pa  closed form of the case's law and end condition, Pa
+//   rel_error    (p_mean - p_theory) / p_theory; empty where p_theory is 0
+//
+// convergence_summary.csv, one row per backend and load step, from the levels it finished:
+//   backend, step, alpha  as above
+//   n_levels             levels that finished this step
+//   edge_fine_m          mean edge length of the finest of them, m
+//   ratio                refinement ratio used: the measured mean-edge ratio of the finest
+//                        three (or two) levels, geometric mean (nominally 2)
+//   p_fine_Pa            mean pressure on the finest level, Pa
+//   p_theory_Pa          closed form, Pa
+//   observed_order       p = ln((f3 - f2) / (f2 - f1)) / ln r from the finest three levels
+//                        (f1 finest); with two levels the element's formal order, 2, assumed
+//   order_observed       1 when observed, 0 when assumed
+//   p_richardson_Pa      Richardson-extrapolated pressure f1 + (f1 - f2) / (r^p - 1), Pa
+//   gci_fine             Roache's GCI of the finest level, a fraction of p_fine (0.01 = 1%)
+//   safety_factor        1.25 with three or more levels, 3 with two (Roache 1994)
+//   rel_error_fine       (p_fine - p_theory) / p_theory
+//   rel_error_richardson (p_richardson - p_theory) / p_theory
+//   error_order          ln(|e2| / |e1|) / ln r, the order of the error against the closed form
+//                        from the finest two levels
+// Undefined values (no pressure yet, oscillating sequences) are empty fields.
+//
+// Each run's own pressure.csv and pressure_theta.csv go to <dir>/<backend>/level_<k>/ (no VTU).
+#pragma once
+
+#include "cases/case_parameters.h"
+#include "cases/convergence_analysis.h"
+#include "cases/cylinder_run.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+struct NamedBackendFactory {
+  std::string name;
+  BackendFactory create;
+};
+
+struct ConvergenceLevel {
+  int level = 0;
+  double mesh_scale = 1.0;
+  int n_vertices = 0;
+  double edge_m = 0.0;  // mean rest edge length, m
+  RunResult run;
+};
+
+struct BackendConvergence {
+  std::string backend;
+  std::vector<ConvergenceLevel> levels;  // the levels that were started, coarse to fine
+  bool completed = false;
+  std::string failure;  // why the study of this backend stopped, if it did
+};
+
+struct ConvergenceSummaryRow {
+  std::string backend;
+  int step = 0;
+  double alpha = 0.0;
+  double edge_fine_m = 0.0;
+  double ratio = 2.0;
+  double p_fine_Pa = 0.0;
+  double p_theory_Pa = 0.0;
+  ConvergenceEstimate estimate;
+  double rel_error_fine = 0.0;
+  double rel_error_richardson = 0.0;
+};
+
+struct ConvergenceStudy {
+  std::vector<BackendConvergence> backends;
+  std::vector<ConvergenceSummaryRow> summary;
+  bool completed() const;
+};
+
+// Runs `parameters` at `n_levels` meshes (Mesh scale s0, s0/2, s0/4, ... with s0 the case's
+// own) on each backend in turn, VTU output off, and writes the files above into `output_dir`.
+// A backend that fails at one level stops its own study (the next backend still runs).
+// Throws std::invalid_argument when n_levels < 2 or a level's setup is invalid.
+ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_levels,
+                                       const std::vector<NamedBackendFactory>& backends,
+                                       const std::string& output_dir, std::ostream& log);
+
+// The summary rows of one backend's study, one per load step that finished on two or more
+// levels.
+std::vector<ConvergenceSummaryRow> summarise_convergence(const BackendConvergence& study);
+
+}  // namespace tightfit
