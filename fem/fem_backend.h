@@ -1,0 +1,51 @@
+// The finite-element membrane backend (issue 3): the garment's pattern is the reference
+// domain, the unknown is the 3D position field, seams are constraints, contact is
+// augmented-Lagrangian through contact/, and each load step is solved by Newton's method.
+// deal.II stays behind the pointer to the implementation: this header is light.
+#pragma once
+
+#include "core/backend.h"
+#include "fem/fem_parameters.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace tightfit {
+
+class FemBackend final : public Backend {
+ public:
+  // Builds the mesh, the degrees of freedom and the seam constraints, distributed over
+  // MPI_COMM_WORLD (MPI and PETSc are started here when the program has not done so).
+  FemBackend(const Problem& problem, const FemParameters& parameters);
+  ~FemBackend() override;
+
+  std::string name() const override { return "fem"; }
+  void set_positions(const std::vector<Vec3>& positions_m) override;
+  // Throws SolverError naming the step (index, alpha) and the residual when it fails.
+  StepReport solve(const LoadStep& step) override;
+  SurfaceState state() const override;
+
+  // Contact traction at each welded vertex, Pa: the contact multiplier over the vertex's
+  // current barycentric area (zero off contact). Written beside the extractor's pressure.
+  std::vector<double> contact_traction_Pa() const;
+  // Largest penetration of a vertex in contact after the last step, m.
+  double max_penetration_m() const;
+  // Residual-force history (largest component, N) of every Newton iteration of the last step.
+  const std::vector<double>& last_residual_history_N() const;
+
+  // For tests, serial only: the residual R = dPi/dx - f_contact (N) on the welded vertices and
+  // its derivative dR/dx (N/m, 3n x 3n, node-major) at `positions_m`, with the current
+  // contact multipliers and without pins or held ends.
+  void linearise(const std::vector<Vec3>& positions_m, Eigen::VectorXd& residual_N,
+                 Eigen::MatrixXd& tangent_N_per_m) const;
+  // The membrane's internal force (minus the energy gradient) on each welded vertex, N.
+  std::vector<Vec3> internal_force_N(const std::vector<Vec3>& positions_m) const;
+
+ private:
+  class Implementation;
+  std::unique_ptr<Implementation> impl_;
+};
+
+}  // namespace tightfit

@@ -1,0 +1,26 @@
+#include "fem/fem_entry.h"
+
+#include "fem/fem_backend.h"
+#include "fem/fem_parameters.h"
+
+namespace tightfit {
+
+BackendEntry fem_backend_entry() {
+  BackendEntry entry;
+  entry.name = "fem";
+  entry.description =
+      "Finite-element membrane (deal.II + PETSc): Newton's method on the static equilibrium, "
+      "augmented-Lagrangian contact, seams as constraints; runs under mpirun.";
+  entry.declare_parameters = [](dealii::ParameterHandler& prm) {
+    FemParameters::declare_parameters(prm);
+  };
+  entry.create = [](const Problem& problem,
+                    dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
+    FemParameters parameters;
+    parameters.parse_parameters(prm);
+    return std::make_unique<FemBackend>(problem, parameters);
+  };
+  return entry;
+}
+
+}  // namespace tightfit

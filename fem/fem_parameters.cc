@@ -1,0 +1,100 @@
+#include "fem/fem_parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+const char* const subsection_name = "Finite elements";
+}
+
+const char* to_string(LinearSolverKind kind) {
+  switch (kind) {
+    case LinearSolverKind::direct:
+      return "direct";
+    case LinearSolverKind::cg_amg:
+      return "cg-amg";
+    case LinearSolverKind::gmres_amg:
+      return "gmres-amg";
+  }
+  return "unknown";
+}
+
+void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::Selection;
+  const FemParameters d;
+  prm.enter_subsection(subsection_name);
+  prm.declare_entry("Element degree", std::to_string(d.element_degree), Integer(1, 1),
+                    "Polynomial degree of the 3D position field on the pattern's triangles "
+                    "(dimensionless). Degree 1 (linear triangles) runs the very mesh of the "
+                    "mass-spring backend and assembles the same membrane forces.");
+  prm.declare_entry("Linear solver", to_string(d.linear_solver),
+                    Selection("direct|cg-amg|gmres-amg"),
+                    "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (small "
+                    "meshes); 'cg-amg' is conjugate gradients preconditioned by BoomerAMG "
+                    "(large meshes); 'gmres-amg' is GMRES with BoomerAMG.");
+  prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
+                    "Krylov solvers stop when the residual falls below this fraction of the "
+                    "right-hand side (dimensionless). Unused by 'direct'.");
+  prm.declare_entry("Maximum linear iterations", std::to_string(d.max_linear_iterations),
+                    Integer(1, 100000), "Krylov iteration limit per Newton step (count).");
+  prm.declare_entry("Residual tolerance", "1e-10", Double(1e-15, 1e-2),
+                    "Newton stops when the largest residual force on a free degree of freedom is "
+                    "below this fraction of Y h, the law's stiffness scale (N/m) times the mean "
+                    "rest edge length (m): dimensionless.");
+  prm.declare_entry("Maximum Newton iterations", std::to_string(d.max_newton_iterations),
+                    Integer(1, 1000),
+                    "Newton iterations per augmented-Lagrangian round before the step fails "
+                    "(count).");
+  prm.declare_entry("Line search", d.line_search ? "true" : "false", Bool(),
+                    "Backtrack along each Newton direction until the residual norm decreases.");
+  prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
+                    Integer(0, 60), "How often a Newton step may be halved (count).");
+  prm.declare_entry("Penalty factor", "100", Double(1e-3, 1e12),
+                    "Contact penalty k = beta Y / h^2 in Pa/m (Y the law's stiffness scale, h the "
+                    "mean rest edge length): this beta, dimensionless. Augmented-Lagrangian "
+                    "updates remove its effect on the pressure; it only sets how fast they "
+                    "converge.");
+  prm.declare_entry("Maximum augmented Lagrangian iterations",
+                    std::to_string(d.max_augmented_lagrangian_iterations), Integer(1, 1000),
+                    "Multiplier updates per load step before the step fails (count).");
+  prm.declare_entry("Gap tolerance", "1e-9", Double(0, 1),
+                    "Largest penetration of a vertex in contact at a converged step, m.");
+  prm.declare_entry("Tangent shift", "0", Double(0, 1e12),
+                    "Added to the tangent's diagonal, N/m, for bodies other than a cylinder "
+                    "whose rigid motions are not pinned. It changes the Newton path, never the "
+                    "converged state.");
+  prm.leave_subsection();
+}
+
+void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
+  prm.enter_subsection(subsection_name);
+  element_degree = prm.get_integer("Element degree");
+  const std::string solver = prm.get("Linear solver");
+  if (solver == "direct")
+    linear_solver = LinearSolverKind::direct;
+  else if (solver == "cg-amg")
+    linear_solver = LinearSolverKind::cg_amg;
+  else if (solver == "gmres-amg")
+    linear_solver = LinearSolverKind::gmres_amg;
+  else
+    throw std::invalid_argument("Finite elements/Linear solver: unknown solver '" + solver + "'");
+  linear_tolerance = prm.get_double("Linear solver tolerance");
+  max_linear_iterations = prm.get_integer("Maximum linear iterations");
+  residual_tolerance = prm.get_double("Residual tolerance");
+  max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+  line_search = prm.get_bool("Line search");
+  max_line_search_halvings = prm.get_integer("Maximum line search halvings");
+  penalty_factor = prm.get_double("Penalty factor");
+  max_augmented_lagrangian_iterations = prm.get_integer("Maximum augmented Lagrangian iterations");
+  gap_tolerance_m = prm.get_double("Gap tolerance");
+  tangent_shift_N_per_m = prm.get_double("Tangent shift");
+  prm.leave_subsection();
+}
+
+}  // namespace tightfit

@@ -1,0 +1,48 @@
+// Parameters of the finite-element membrane backend: the "Finite elements" subsection.
+#pragma once
+
+#include <string>
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace tightfit {
+
+enum class LinearSolverKind {
+  direct,     // PETSc's MUMPS sparse LU: small problems, exact solves
+  cg_amg,     // conjugate gradients with BoomerAMG: large problems (the tangent is symmetric)
+  gmres_amg,  // GMRES with BoomerAMG: when the tangent is not positive definite
+};
+
+struct FemParameters {
+  // Polynomial degree of the position field on triangles. Degree 1 makes the assembled
+  // internal force that of the mass-spring backend's triangle element.
+  int element_degree = 1;
+  LinearSolverKind linear_solver = LinearSolverKind::direct;
+  // Krylov stopping rule: residual relative to the right-hand side.
+  double linear_tolerance = 1e-10;
+  int max_linear_iterations = 1000;
+  // Newton stops when the largest residual force on a free degree of freedom is below
+  // residual_tolerance * Y * h (Y the law's stiffness scale, N/m; h the mean rest edge, m).
+  double residual_tolerance = 1e-10;
+  int max_newton_iterations = 40;
+  bool line_search = true;
+  int max_line_search_halvings = 10;
+  // Penalty k = beta * Y / h^2 (Pa/m) of the augmented-Lagrangian contact.
+  double penalty_factor = 100.0;
+  int max_augmented_lagrangian_iterations = 20;
+  // Largest penetration accepted at a vertex in contact, m.
+  double gap_tolerance_m = 1e-9;
+  // Added to the tangent's diagonal (N/m) to remove rigid motions of bodies that do not
+  // pin them; changes the path, never the converged state (the residual is untouched).
+  double tangent_shift_N_per_m = 0.0;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  // Reads the subsection; throws std::invalid_argument naming the entry on a bad value.
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+const char* to_string(LinearSolverKind kind);
+
+}  // namespace tightfit

@@ -1,0 +1,30 @@
+// Frictionless augmented-Lagrangian contact of one vertex with a rigid body.
+//
+// With the penalty stiffness kA = k A0 (k in Pa/m, A0 the vertex's rest area) and the
+// multiplier estimate lambda_bar (N), the contact force on the vertex is
+//   lambda n,  lambda = max(0, lambda_bar - kA g)  (g the signed distance, n the body normal),
+// the derivative of the potential max(0, lambda_bar - kA g)^2 / (2 kA). Updating lambda_bar to
+// lambda after each converged solve drives g to zero for any kA (Uzawa's iteration), so the
+// pressure does not depend on the penalty.
+#pragma once
+
+#include "contact/rigid_body.h"
+#include "core/types.h"
+
+namespace tightfit {
+
+struct NodalContact {
+  double gap_m = 0.0;
+  double multiplier_N = 0.0;  // lambda >= 0
+  Vec3 normal = Vec3::UnitZ();
+  Vec3 force_N = Vec3::Zero();  // lambda n, on the garment
+  // -d(force)/dx = kA n n^T - lambda dn/dx when active, N/m (symmetrised).
+  Mat3 stiffness_N_per_m = Mat3::Zero();
+};
+
+// `normal_step_m` is the finite-difference step that measures the body's curvature dn/dx
+// through RigidBody::query (central differences); zero skips the stiffness.
+NodalContact nodal_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
+                           double penalty_N_per_m, double normal_step_m);
+
+}  // namespace tightfit

@@ -1,0 +1,245 @@
+// The FE backend on the paper's cylinder: its assembled forces against an independent triangle
+// element and finite differences, and its pressure against the six closed forms of
+// cylinder-theory.md.
+#include "core/mesh_geometry.h"
+#include "fem/fem_backend.h"
+#include "tube_problem.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <cstdio>
+#include <random>
+
+namespace tightfit {
+namespace {
+
+using testing::closed_form_pressure_Pa;
+using testing::TubeCase;
+
+// A coarse tube (about 12 vertices round, 5 rows): small enough for dense finite differences.
+const MeshSpacing coarse{0.03, 0.06};
+
+TEST(FemAssembly, InternalForceIsTheTriangleElementForce) {
+  TubeCase tube("st venant kirchhoff", EndCondition::free_ends, coarse);
+  FemBackend backend(tube.problem, FemParameters{});
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> noise(-2e-3, 2e-3);
+  std::vector<Vec3> x = tube.placed(1.3 * tube.rest_radius_m);
+  for (Vec3& p : x) p += Vec3(noise(random), noise(random), noise(random));
+
+  // The triangle element written out: f_a = -A0 F S grad_N_a, grad_N from the rest corners.
+  std::vector<Vec3> expected(tube.mesh.n_vertices, Vec3::Zero());
+  for (std::size_t t = 0; t < tube.mesh.triangles.size(); ++t) {
+    const auto& r = tube.mesh.rest_triangles[t];
+    const auto& v = tube.mesh.triangles[t];
+    const Mat32 F = deformation_gradient(r, x[v[0]], x[v[1]], x[v[2]]);
+    const Mat2 S = tube.law->stress(F.transpose() * F);
+    Mat2 Dm;
+    Dm << r[1] - r[0], r[2] - r[0];
+    const Mat2 inverse = Dm.inverse();
+    const Vec2 g1 = inverse.row(0).transpose(), g2 = inverse.row(1).transpose();
+    const Vec2 g[3] = {-g1 - g2, g1, g2};
+    const double area = 0.5 * std::abs(Dm.determinant());
+    for (int a = 0; a < 3; ++a) expected[v[a]] -= area * F * S * g[a];
+  }
+  const std::vector<Vec3> force = backend.internal_force_N(x);
+  double scale = 0.0;
+  for (const Vec3& f : expected) scale = std::max(scale, f.norm());
+  for (int w = 0; w < tube.mesh.n_vertices; ++w)
+    EXPECT_LT((force[w] - expected[w]).norm(), 1e-10 * scale) << "vertex " << w;
+}
+
+TEST(FemAssembly, TangentMatchesFiniteDifferencesOfTheResidual) {
+  for (const char* law : {"linear biot", "st venant kirchhoff", "neo hookean"}) {
+    TubeCase tube(law, EndCondition::free_ends, coarse);
+    FemBackend backend(tube.problem, FemParameters{});
+    // Inside a larger cylinder: every vertex is in (penalty) contact, so the contact
+    // stiffness, with the body's curvature, is checked too.
+    tube.grow_to(1.5);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
+    std::vector<Vec3> x = tube.placed(1.45 * tube.rest_radius_m);
+    for (Vec3& p : x) p += Vec3(noise(random), noise(random), noise(random));
+    Eigen::VectorXd R;
+    Eigen::MatrixXd K;
+    backend.linearise(x, R, K);
+    const int n = static_cast<int>(R.size());
+    Eigen::MatrixXd K_fd(n, n);
+    const double h = 1e-7;
+    for (int j = 0; j < n; ++j) {
+      std::vector<Vec3> xp = x, xm = x;
+      xp[j / 3][j % 3] += h;
+      xm[j / 3][j % 3] -= h;
+      Eigen::VectorXd Rp, Rm;
+      Eigen::MatrixXd unused;
+      backend.linearise(xp, Rp, unused);
+      backend.linearise(xm, Rm, unused);
+      K_fd.col(j) = (Rp - Rm) / (2 * h);
+    }
+    EXPECT_LT((K - K_fd).norm(), 1e-6 * K.norm()) << law;
+    EXPECT_LT((K - K.transpose()).norm(), 1e-12 * K.norm()) << law;
+  }
+}
+
+// Total normal force over total area: the pressure no area definition can bias.
+double force_over_area_Pa(const TubeCase& tube, const SurfaceState& state) {
+  const PressureField field = extract_pressure(
+      tube.mesh.triangles, state, VertexAreaDefinition::barycentric, tube.cylinder.get());
+  double force = 0.0, area = 0.0;
+  for (int w = 0; w < tube.mesh.n_vertices; ++w) {
+    force += field.normal_force_N[w];
+    area += field.vertex_area_m2[w];
+  }
+  return force / area;
+}
+
+struct LawAndEnds {
+  const char* law;
+  EndCondition ends;
+};
+
+class CylinderClosedForm : public ::testing::TestWithParam<LawAndEnds> {};
+
+// The paper mesh (4 5T at the default spacing: 42 vertices round the even rows). Linear
+// elements inscribe a polygon in the circle: with N vertices round the hoop the hoop strain is
+// under-read by about (pi/N)^2 / 6 = 9.3e-4 for N = 42, a pressure error of about
+// 9.3e-4 (1/alpha)/(1 - 1/alpha): 0.47% at alpha 1.2, 0.19% at 1.5, 0.12% at 1.8.
+TEST_P(CylinderClosedForm, MeanPressureWithinOnePercentOnThePaperMesh) {
+  const LawAndEnds c = GetParam();
+  TubeCase tube(c.law, c.ends);
+  FemBackend backend(tube.problem, FemParameters{});
+  bool placed = false;
+  for (const double alpha : {1.2, 1.5, 1.8}) {
+    tube.grow_to(alpha);
+    if (!placed) backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
+    placed = true;
+    const StepReport report = backend.solve({0, alpha, false});
+    const SurfaceState state = backend.state();
+    const PressureSummary p = tube.pressure(state);
+    const double force_over_area = force_over_area_Pa(tube, state);
+    const double theory =
+        closed_form_pressure_Pa(c.law, c.ends, alpha, tube.fabric, tube.rest_radius_m);
+    std::vector<double> traction = backend.contact_traction_Pa();
+    double traction_mean = 0.0;
+    for (double t : traction) traction_mean += t / traction.size();
+    std::printf(
+        "%s, %s ends, alpha %.1f: p_mean %.4f Pa, theory %.4f Pa, rel %+.3e, spread "
+        "%.2e, F/A rel %+.3e, traction rel %+.3e | %s\n",
+        c.law, c.ends == EndCondition::free_ends ? "free" : "held", alpha, p.mean_Pa, theory,
+        p.mean_Pa / theory - 1, p.std_Pa / p.mean_Pa, force_over_area / theory - 1,
+        traction_mean / theory - 1, report.detail.c_str());
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(p.contact_fraction, 1.0);
+    EXPECT_NEAR(p.mean_Pa / theory, 1.0, 0.01) << "alpha " << alpha;
+    EXPECT_NEAR(force_over_area / theory, 1.0, 0.01) << "alpha " << alpha;
+    EXPECT_LE(p.std_Pa / p.mean_Pa, 0.005) << "alpha " << alpha;
+    EXPECT_NEAR(traction_mean / theory, 1.0, 0.01) << "alpha " << alpha;
+    EXPECT_LE(backend.max_penetration_m(), 1e-9);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SixClosedForms, CylinderClosedForm,
+    ::testing::Values(LawAndEnds{"linear biot", EndCondition::free_ends},
+                      LawAndEnds{"linear biot", EndCondition::held_ends},
+                      LawAndEnds{"st venant kirchhoff", EndCondition::free_ends},
+                      LawAndEnds{"st venant kirchhoff", EndCondition::held_ends},
+                      LawAndEnds{"neo hookean", EndCondition::free_ends},
+                      LawAndEnds{"neo hookean", EndCondition::held_ends}));
+
+}  // namespace
+}  // namespace tightfit
+
+namespace tightfit {
+namespace {
+
+// Linear elements inscribe a polygon of N sides in the hoop: the pressure error is about
+// (pi/N)^2 / 6 (1/alpha)/(1 - 1/alpha), second order in the hoop spacing. Doubling N (N = 12,
+// 24, 48 round the even rows) must divide the error of the total normal force over the total
+// area by about 4.
+TEST(CylinderRefinement, ErrorFallsAtSecondOrder) {
+  const double alpha = 1.5;
+  std::vector<double> errors;
+  for (const int per_panel : {6, 12, 24}) {
+    TubeCase tube("linear biot", EndCondition::free_ends, MeshSpacing{0.1878 / per_panel, 0.06});
+    FemBackend backend(tube.problem, FemParameters{});
+    tube.grow_to(alpha);
+    backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
+    backend.solve({0, alpha, false});
+    const PressureField field =
+        extract_pressure(tube.mesh.triangles, backend.state(), VertexAreaDefinition::barycentric,
+                         tube.cylinder.get());
+    double force = 0.0, area = 0.0;
+    for (int w = 0; w < tube.mesh.n_vertices; ++w) {
+      force += field.normal_force_N[w];
+      area += field.vertex_area_m2[w];
+    }
+    const double theory = closed_form_pressure_Pa("linear biot", EndCondition::free_ends, alpha,
+                                                  tube.fabric, tube.rest_radius_m);
+    errors.push_back(std::abs(force / area / theory - 1.0));
+    const double predicted =
+        std::pow(M_PI / (2 * per_panel), 2) / 6 * (1 / alpha) / (1 - 1 / alpha);
+    std::printf("N = %d: error %.3e (polygon estimate %.3e)\n", 2 * per_panel, errors.back(),
+                predicted);
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) {
+    const double rate = std::log2(errors[i - 1] / errors[i]);
+    std::printf("rate %.2f\n", rate);
+    EXPECT_NEAR(rate, 2.0, 0.3);
+  }
+}
+
+// Augmented-Lagrangian updates close the gap whatever the penalty: the pressure must not
+// depend on it.
+TEST(CylinderContact, PressureDoesNotDependOnThePenalty) {
+  std::vector<double> means;
+  for (const double beta : {1.0, 100.0, 10000.0}) {
+    TubeCase tube("st venant kirchhoff", EndCondition::held_ends, MeshSpacing{0.02, 0.04});
+    FemParameters parameters;
+    parameters.penalty_factor = beta;
+    parameters.max_augmented_lagrangian_iterations = 200;
+    FemBackend backend(tube.problem, parameters);
+    tube.grow_to(1.5);
+    backend.set_positions(tube.placed(1.5 * tube.rest_radius_m));
+    const StepReport report = backend.solve({0, 1.5, false});
+    means.push_back(tube.pressure(backend.state()).mean_Pa);
+    std::printf("beta %g: p_mean %.8f Pa | %s\n", beta, means.back(), report.detail.c_str());
+  }
+  EXPECT_NEAR(means[0] / means[1], 1.0, 1e-6);
+  EXPECT_NEAR(means[2] / means[1], 1.0, 1e-6);
+}
+
+// A step that cannot converge stops with a message naming the step and the residual.
+TEST(CylinderFailure, NewtonFailureNamesTheStepAndResidual) {
+  TubeCase tube("neo hookean", EndCondition::free_ends, MeshSpacing{0.03, 0.06});
+  FemParameters parameters;
+  parameters.max_newton_iterations = 1;
+  FemBackend backend(tube.problem, parameters);
+  tube.grow_to(1.8);
+  backend.set_positions(tube.placed(tube.rest_radius_m));
+  try {
+    backend.solve({7, 1.8, false});
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("load step 7"), std::string::npos) << what;
+    EXPECT_NE(what.find("alpha 1.8"), std::string::npos) << what;
+    EXPECT_NE(what.find("residual"), std::string::npos) << what;
+  }
+}
+
+// Below the rest radius the garment hangs loose: it converges without touching the body.
+TEST(CylinderContact, LooseGarmentIsAlreadyInEquilibrium) {
+  TubeCase tube("linear biot", EndCondition::free_ends, MeshSpacing{0.03, 0.06});
+  FemBackend backend(tube.problem, FemParameters{});
+  tube.grow_to(0.8);
+  backend.set_positions(tube.placed(tube.rest_radius_m));
+  const StepReport report = backend.solve({0, 0.8, false});
+  EXPECT_TRUE(report.converged);
+  for (char c : backend.state().in_contact) EXPECT_EQ(c, 0);
+}
+
+}  // namespace
+}  // namespace tightfit
