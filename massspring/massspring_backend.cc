@@ -76,7 +76,6 @@ void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
                                 std::to_string(problem_.mesh->n_vertices) + " vertices");
   x_ = positions_m;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
-  placed_ = true;
 }
 
 void MassSpringBackend::internal_forces(const std::vector<Vec3>& x,
@@ -160,8 +159,6 @@ double MassSpringBackend::choose_time_step_s() const {
 
 StepReport MassSpringBackend::solve(const LoadStep& step) {
   const auto start = std::chrono::steady_clock::now();
-  if (!placed_ && parameters_.placement == Placement::flat_panels) place_flat_panels(step);
-  placed_ = true;
 
   time_step_s_ = choose_time_step_s();
   damping_per_s_ = parameters_.damping_per_s > 0
@@ -235,10 +232,6 @@ SurfaceState MassSpringBackend::state() const {
     s.gap_m.assign(x_.size(), 0.0);
   }
   return s;
-}
-
-void MassSpringBackend::place_flat_panels(const LoadStep& step) {
-  throw SolverError("mass spring: " + step_name(step) + ": flat-panel placement needs a cylinder");
 }
 
 }  // namespace tightfit

@@ -49,8 +49,6 @@ class MassSpringBackend final : public Backend {
   void remove_held_component(Vec3& vector) const {
     vector -= vector.dot(held_direction_) * held_direction_;
   }
-  // The paper's placement: closes the seams of flat panels round a cylinder.
-  void place_flat_panels(const LoadStep& step);
 
   Problem problem_;
   MassSpringParameters parameters_;
@@ -64,7 +62,6 @@ class MassSpringBackend final : public Backend {
   double size_m_ = 0.0;  // the garment's rest size, sqrt(rest area)
   double time_step_s_ = 0.0;
   double damping_per_s_ = 0.0;
-  bool placed_ = false;
 
   std::vector<Vec3> x_, v_;
   // RK4 work space, allocated once.

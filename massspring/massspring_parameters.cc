@@ -2,52 +2,51 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <sstream>
+
 namespace tightfit {
+
+namespace {
+// A default as the parameter file shows it ("0.9", not "0.900000").
+template <class T>
+std::string text(T value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+}  // namespace
 
 void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
-  using dealii::Patterns::Selection;
   const MassSpringParameters d;
   prm.enter_subsection("Mass spring");
-  prm.declare_entry("Time step", std::to_string(d.time_step_s), Double(0.0, 1.0),
+  prm.declare_entry("Time step", text(d.time_step_s), Double(0.0, 1.0),
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
-                    "stability limit 2.8/omega_max, omega_max from the stiffest vertex "
+                    "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
                     "(membrane, bending, penalty contact), recomputed every load step.");
-  prm.declare_entry("Time step safety", std::to_string(d.time_step_safety), Double(1e-3, 1.2),
+  prm.declare_entry("Time step safety", text(d.time_step_safety), Double(1e-3, 1.2),
                     "Fraction of the RK4 stability limit used by the automatic time step, "
                     "dimensionless.");
-  prm.declare_entry("Damping", std::to_string(d.damping_per_s), Double(0.0, 1e7),
+  prm.declare_entry("Damping", text(d.damping_per_s), Double(0.0, 1e7),
                     "Mass-proportional damping c, 1/s (each particle's acceleration gets -c v). "
                     "0 = automatic: critical damping of the garment's slowest membrane wave.");
-  prm.declare_entry("Quasi-static frames", std::to_string(d.quasi_static_frames),
-                    Integer(0, 100000000),
+  prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
                     "zero every frame) before damped RK4 takes over; the start also ends when "
                     "the stop rule is met.");
-  prm.declare_entry("Relative tolerance", "1e-4", Double(1e-12, 1.0),
+  prm.declare_entry("Relative tolerance", text(d.relative_tolerance), Double(1e-12, 1.0),
                     "Stop rule, dimensionless: a state is stable when the largest residual force "
                     "on any vertex (internal + contact + gravity, held components removed) is "
                     "below this times the tension scale, the law's stiffness scale (N/m) times "
                     "the mean rest edge length (m).");
-  prm.declare_entry("Maximum frames", std::to_string(d.maximum_frames), Integer(1, 2000000000),
+  prm.declare_entry("Maximum frames", text(d.maximum_frames), Integer(1, 2000000000),
                     "Guard against non-convergence, frames: a load step that has not met the "
                     "stop rule by then fails with an error naming the step and residual.");
-  prm.declare_entry("Bending rigidity", "1e-6", Double(0.0, 1.0),
+  prm.declare_entry("Bending rigidity", text(d.bending_rigidity_N_m), Double(0.0, 1.0),
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
                     "Angular springs on interior edges, hinge stiffness 3 B |e|^2 / (A1 + A2) "
                     "(Grinspun et al. 2003). 0 = no bending springs.");
-  prm.declare_entry("Placement", to_string(d.placement), Selection("sewn tube|flat panels"),
-                    "How the first load step starts. 'sewn tube': from the positions the caller "
-                    "sets (the sewn tube round the body). 'flat panels': the paper's Section 4.3, "
-                    "panels flat on opposite sides of a cylinder, pulled together by seam "
-                    "springs of zero rest length until the seams close.");
-  prm.declare_entry("Placement gap", std::to_string(d.placement_gap_m), Double(1e-6, 1.0),
-                    "Flat-panel placement: distance between each flat panel and the body, m.");
-  prm.declare_entry("Seam stiffness factor", std::to_string(d.seam_stiffness_factor),
-                    Double(1e-3, 1e6),
-                    "Flat-panel placement: stiffness of each seam spring as a multiple of the "
-                    "law's stiffness scale (N/m per N/m), dimensionless.");
   prm.leave_subsection();
 }
 
@@ -60,9 +59,6 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   relative_tolerance = prm.get_double("Relative tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
   bending_rigidity_N_m = prm.get_double("Bending rigidity");
-  placement = prm.get("Placement") == "flat panels" ? Placement::flat_panels : Placement::sewn_tube;
-  placement_gap_m = prm.get_double("Placement gap");
-  seam_stiffness_factor = prm.get_double("Seam stiffness factor");
   prm.leave_subsection();
   validate();
 }

@@ -6,10 +6,6 @@
 
 namespace tightfit {
 
-const char* to_string(Placement placement) {
-  return placement == Placement::sewn_tube ? "sewn tube" : "flat panels";
-}
-
 void MassSpringParameters::validate() const {
   auto require = [](bool ok, const char* entry, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("Mass spring/") + entry + " " + what);
@@ -23,8 +19,6 @@ void MassSpringParameters::validate() const {
           "must be in (0, 1)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
   require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");
-  require(placement_gap_m > 0, "Placement gap", "must be positive (m)");
-  require(seam_stiffness_factor > 0, "Seam stiffness factor", "must be positive");
 }
 
 }  // namespace tightfit

@@ -3,11 +3,12 @@
 // (cylinder-theory.md). Mean pressure within 1% of Eq. 7 and spread within 3%; the paper's
 // adjacent-triangle area reads a third of it.
 //
-// Where the spread is read: the panel mesh closes every other row with a half-spacing vertex
-// on each seam, and that vertex's barycentric area (a third of its thin triangles) is two
-// thirds of its share of the hoop, so the barycentric reading shows a +38% spike there while
-// the force balance is right (the mean is unaffected). The mixed Voronoi area gives each
-// vertex its true share, so the spread is asserted with it; the barycentric spread is printed.
+// Where the spread is read: a mesh whose spacing changes (an offset-row mesh closes every
+// other row with a half-spacing vertex at each seam) gives such vertices a barycentric area
+// (a third of each adjacent triangle) that is not their share of the hoop, so the barycentric
+// reading spikes there while the force balance and the mean are right. The mixed Voronoi area
+// gives each vertex its true share, so the spread is asserted with it on any mesh; the
+// barycentric spread is printed (and equals it on a regular grid).
 #include "contact/pressure_extractor.h"
 #include "tube_on_cylinder.h"
 

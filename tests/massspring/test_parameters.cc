@@ -1,0 +1,44 @@
+// The "Mass spring" subsection: every entry declared with its range, parsed into the settings.
+#include "massspring/massspring_parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <gtest/gtest.h>
+
+namespace tightfit {
+namespace {
+
+TEST(MassSpringParameters, DefaultsParseToTheStructsDefaults) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  MassSpringParameters parsed;
+  parsed.relative_tolerance = 0.5;  // must be overwritten by the declared default
+  parsed.parse_parameters(prm);
+  const MassSpringParameters defaults;
+  EXPECT_EQ(parsed.time_step_s, defaults.time_step_s);
+  EXPECT_EQ(parsed.relative_tolerance, defaults.relative_tolerance);
+  EXPECT_EQ(parsed.quasi_static_frames, defaults.quasi_static_frames);
+  EXPECT_EQ(parsed.maximum_frames, defaults.maximum_frames);
+  EXPECT_EQ(parsed.bending_rigidity_N_m, defaults.bending_rigidity_N_m);
+  EXPECT_EQ(parsed.damping_per_s, defaults.damping_per_s);
+}
+
+TEST(MassSpringParameters, ReadsAFileAndRejectsValuesOutOfRange) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Time step = 2e-5\n  set Bending rigidity = 5e-6\n"
+      "  set Maximum frames = 1000\nend\n");
+  MassSpringParameters p;
+  p.parse_parameters(prm);
+  EXPECT_DOUBLE_EQ(p.time_step_s, 2e-5);
+  EXPECT_DOUBLE_EQ(p.bending_rigidity_N_m, 5e-6);
+  EXPECT_EQ(p.maximum_frames, 1000);
+  EXPECT_ANY_THROW(
+      prm.parse_input_from_string("subsection Mass spring\n  set Damping = -1\nend\n"));
+  EXPECT_ANY_THROW(
+      prm.parse_input_from_string("subsection Mass spring\n  set Relative tolerance = 2\nend\n"));
+}
+
+}  // namespace
+}  // namespace tightfit
