@@ -7,7 +7,7 @@
 #   RESULTS_DIR  where the runs wrote (default output), read as:
 #     cylinder_T/, cylinder_45T/        tightfit run cases/cylinder_T.prm cases/cylinder_45T.prm
 #     cylinder_T_compare/               tightfit compare cases/cylinder_T.prm
-#     cylinder_T_gravity/               the same case with gravity while measuring (optional)
+#     cylinder_T_gravity/               the same case with gravity (optional)
 #     cylinder_T_convergence/           tightfit convergence cases/cylinder_T.prm
 #   FIGURES_DIR  where the PNGs go (default docs/figures)
 set -euo pipefail
@@ -17,13 +17,16 @@ figures=${2:-docs/figures}
 plots=scripts/plots
 mkdir -p "$figures"
 
-# plot FIGURE SCRIPT GNUPLOT_SETTINGS CSV...: draws $figures/FIGURE.png when every CSV exists,
+# has_rows CSV: the file exists and holds a row below its header.
+has_rows() { [[ -s $1 && $(wc -l <"$1") -gt 1 ]]; }
+
+# plot FIGURE SCRIPT GNUPLOT_SETTINGS CSV...: draws $figures/FIGURE.png when every CSV has rows,
 # and copies each CSV beside it as FIGURE.<parent folder>.csv (FIGURE.csv when only one).
 plot() {
   local figure=$1 script=$2 settings=$3
   shift 3
   for csv in "$@"; do
-    if [[ ! -s $csv ]]; then
+    if ! has_rows "$csv"; then
       echo "  $figure: skipped ($csv is missing)"
       return 0
     fi
@@ -52,7 +55,7 @@ plot fig07_pressure_radius pressure_radius.gp \
 plot fig08_garment_sizes garment_sizes.gp \
   "csv1='$T/pressure.csv'; name1='T'; csv2='$T45/pressure.csv'; name2='4 5T'" \
   "$T/pressure.csv" "$T45/pressure.csv"
-if [[ -s $compare/massspring/pressure.csv && -s $compare/fem/pressure.csv ]]; then
+if has_rows "$compare/massspring/pressure.csv" && has_rows "$compare/fem/pressure.csv"; then
   plot fig10_pressure_alpha pressure_alpha.gp \
     "files='$compare/massspring/pressure.csv $compare/fem/pressure.csv'; \
      labels='\"mass-spring backend\" \"FEM backend\"'; name='T'" \
@@ -63,13 +66,13 @@ else
 fi
 plot fig11_pressure_theta pressure_theta.gp \
   "files='$T/pressure_theta.csv'; labels='\"no gravity\"'; name='T'" "$T/pressure_theta.csv"
-if [[ -s $gravity/pressure_theta.csv ]]; then
+if has_rows "$gravity/pressure_theta.csv"; then
   plot fig13_pressure_theta_gravity pressure_theta.gp \
     "files='$T/pressure_theta.csv $gravity/pressure_theta.csv'; \
-     labels='\"no gravity\" \"gravity while measuring\"'; name='T'" \
+     labels='\"no gravity\" \"with gravity\"'; name='T'" \
     "$T/pressure_theta.csv" "$gravity/pressure_theta.csv"
 fi
-if [[ -s $convergence ]]; then
+if has_rows "$convergence"; then
   backends=$(backends_in "$convergence")
   plot convergence_error convergence_error.gp \
     "csv='$convergence'; backends='$backends'" "$convergence"
