@@ -14,7 +14,9 @@ void MeshSpacing::validate() const {
 namespace {
 
 // Joins two rows of vertices (sorted by x, same first and last x) by a strip of triangles,
-// each step adding the shorter of the two possible diagonals (the Delaunay choice here).
+// each step adding the shorter of the two possible diagonals (the Delaunay choice). On equal
+// rows the two are equally long and the tie always advances the lower row first, so every
+// cell is cut the same way.
 void zip_rows(const std::vector<int>& lower, const std::vector<int>& upper,
               const std::vector<Vec2>& x, std::vector<Triangle>& triangles) {
   std::size_t a = 0, b = 0;
@@ -47,19 +49,11 @@ Panel make_rectangle_panel(const std::string& name, double width_m, double heigh
   Panel panel;
   panel.name = name;
   std::vector<std::vector<int>> rows(ny + 1);
-  for (int j = 0; j <= ny; ++j) {
-    auto add = [&](double xx) {
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
       rows[j].push_back(static_cast<int>(panel.rest_positions_m.size()));
-      panel.rest_positions_m.emplace_back(xx, j * dy);
-    };
-    if (j % 2 == 0) {
-      for (int i = 0; i <= nx; ++i) add(i * dx);
-    } else {
-      add(0.0);
-      for (int i = 0; i < nx; ++i) add((i + 0.5) * dx);
-      add(width_m);
+      panel.rest_positions_m.emplace_back(i * dx, j * dy);
     }
-  }
   for (int j = 0; j < ny; ++j)
     zip_rows(rows[j], rows[j + 1], panel.rest_positions_m, panel.triangles);
 

@@ -1,0 +1,83 @@
+#include "app/command_line.h"
+
+namespace tightfit {
+
+std::string usage_text() {
+  return R"(tightfit: the pressure a tight garment puts on a body, by simulation.
+
+Usage:
+  tightfit run CASE.prm [CASE2.prm ...] [--output DIR] [--set "Path/To/Entry=value" ...]
+      Runs each case: settles the garment, grows the body step by step, and writes
+      pressure.csv, pressure_theta.csv and VTU/PVD files (ParaView) into DIR (with several
+      cases, DIR/<case name>); prints progress and a summary table.
+  tightfit compare CASE.prm [--output DIR] [--set ...]
+      Runs the case on both backends on the same mesh and writes compare.csv.
+  tightfit convergence CASE.prm [--levels N] [--output DIR] [--set ...]
+      Runs the case on N meshes, halving the edge length each time, on both backends.
+  tightfit --print-parameters [--prm]
+      Lists every parameter with its documentation, unit and default (--prm: as a case file).
+  tightfit --help | --version
+
+Every parameter is in SI units (m, N/m, Pa, kg/m^2); tables also show gf/cm^2 and mmHg.
+Exit status: 0 success, 1 a solver failed (results so far are kept), 2 bad input.
+)";
+}
+
+CommandLine parse_command_line(int argc, const char* const* argv) {
+  CommandLine cl;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) throw UsageError("no command given");
+  const std::string& first = args[0];
+  if (first == "--help" || first == "-h" || first == "help") {
+    cl.command = "help";
+    return cl;
+  }
+  if (first == "--version") {
+    cl.command = "version";
+    return cl;
+  }
+  if (first == "--print-parameters") {
+    cl.command = "print-parameters";
+    for (std::size_t i = 1; i < args.size(); ++i) {
+      if (args[i] != "--prm")
+        throw UsageError("--print-parameters takes only --prm, not '" + args[i] + "'");
+      cl.parameters_as_prm = true;
+    }
+    return cl;
+  }
+  if (first != "run" && first != "compare" && first != "convergence")
+    throw UsageError("unknown command '" + first + "'");
+  cl.command = first;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--output" || a == "-o") {
+      cl.output_dir = value();
+    } else if (a == "--set" || a == "-s") {
+      cl.overrides.push_back(value());
+    } else if (a == "--levels") {
+      const std::string& text = value();
+      try {
+        std::size_t used = 0;
+        cl.levels = std::stoi(text, &used);
+        if (used != text.size()) throw std::invalid_argument(text);
+      } catch (const std::exception&) {
+        throw UsageError("--levels needs a whole number, not '" + text + "'");
+      }
+      if (cl.levels < 2 || cl.levels > 8) throw UsageError("--levels must be between 2 and 8");
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError("unknown option '" + a + "'");
+    } else {
+      cl.case_files.push_back(a);
+    }
+  }
+  if (cl.case_files.empty()) throw UsageError(cl.command + " needs a case file (.prm)");
+  if (cl.command != "run" && cl.case_files.size() > 1)
+    throw UsageError(cl.command + " takes one case file");
+  return cl;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,28 @@
+// The tightfit command line: which command, which case files, which overrides.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+struct CommandLine {
+  std::string command;  // run, compare, convergence, print-parameters, help, version
+  std::vector<std::string> case_files;
+  std::string output_dir;              // empty: the case's Output/Directory
+  std::vector<std::string> overrides;  // "Path/To/Entry=value"
+  int levels = 3;                      // convergence: number of meshes
+  bool parameters_as_prm = false;      // print-parameters --prm
+};
+
+// Thrown for a malformed command line; the message says what is wrong.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+CommandLine parse_command_line(int argc, const char* const* argv);
+std::string usage_text();
+
+}  // namespace tightfit

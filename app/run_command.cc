@@ -1,0 +1,56 @@
+#include "app/run_command.h"
+
+#include "app/summary_table.h"
+#include "cases/case_parameters.h"
+#include "cases/cylinder_run.h"
+#include "cases/cylinder_setup.h"
+
+#include <filesystem>
+#include <ostream>
+
+namespace tightfit {
+
+std::string output_directory_for(const CommandLine& cl, const std::string& case_file,
+                                 const std::string& from_case) {
+  if (cl.output_dir.empty()) return from_case;
+  if (cl.case_files.size() == 1) return cl.output_dir;
+  return (std::filesystem::path(cl.output_dir) / std::filesystem::path(case_file).stem()).string();
+}
+
+int run_command(const CommandLine& cl, std::ostream& out) {
+  // Read and check every case before running any, so a typo in the second file does not
+  // surface after the first has run for minutes.
+  std::vector<std::unique_ptr<CaseFile>> files;
+  std::vector<std::unique_ptr<CylinderSetup>> setups;
+  for (const std::string& path : cl.case_files) {
+    files.push_back(std::make_unique<CaseFile>());
+    files.back()->read(path, cl.overrides);
+    setups.push_back(make_cylinder_setup(files.back()->parameters()));
+  }
+
+  int status = 0;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    CylinderSetup& setup = *setups[i];
+    const CaseFile& file = *files[i];
+    const std::string dir =
+        output_directory_for(cl, cl.case_files[i], setup.parameters.output.directory);
+    print_case_header(out, cl.case_files[i], setup);
+    const RunResult result = run_cylinder_case(
+        setup,
+        [&](const Problem& problem) {
+          return file.create_backend(setup.parameters.backend, problem);
+        },
+        dir, out);
+    out << "\n" << pressure_summary_table(setup, result);
+    out << "  results in " << dir << "/ (pressure.csv, pressure_theta.csv"
+        << (setup.parameters.output.write_vtu ? ", garment.pvd, body.pvd" : "") << ")\n";
+    if (!result.completed) {
+      out << "  the run stopped early: " << result.failure << "\n";
+      status = 1;
+    }
+    out << "\n";
+  }
+  return status;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,315 @@
+// Declares and reads the case file. This is the only translation unit of cases/ that includes
+// deal.II (its ParameterHandler), so that changing a case does not rebuild the heavy headers.
+#include "cases/case_parameters.h"
+
+#include "core/backend_registry.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace tightfit {
+
+using dealii::ParameterHandler;
+namespace Patterns = dealii::Patterns;
+
+namespace {
+
+Vec3 parse_vec3(const std::string& text) {
+  const auto parts = dealii::Utilities::split_string_list(text, ',');
+  Vec3 v;
+  for (int i = 0; i < 3; ++i) v[i] = dealii::Utilities::string_to_double(parts.at(i));
+  return v;
+}
+
+const Patterns::List vec3_pattern(Patterns::Double(), 3, 3, ",");
+
+void declare_garment(ParameterHandler& prm) {
+  prm.enter_subsection("Garment");
+  prm.declare_entry("Name", "4 5T", Patterns::Anything(), "Name of the garment, for tables.");
+  prm.declare_entry("Panel width", "0.1878", Patterns::Double(1e-4),
+                    "Width of each panel, round the tube, along the weft (m). The paper's "
+                    "'4 5T': 0.1878; 'T': 0.157 (Table 3).");
+  prm.declare_entry("Panel height", "0.24", Patterns::Double(1e-4),
+                    "Height of each panel, along the tube, along the warp (m).");
+  prm.declare_entry("Number of panels", "2", Patterns::Integer(1, 64),
+                    "Panels sewn side by side into a closed tube; the rest circumference is "
+                    "this number times the panel width.");
+  prm.declare_entry("Edge length weft", "0.008", Patterns::Double(1e-5),
+                    "Target mesh spacing along the weft, round the tube (m). It sets how "
+                    "closely the flat triangles follow the body's curvature.");
+  prm.declare_entry("Edge length warp", "0.022", Patterns::Double(1e-5),
+                    "Target mesh spacing along the warp, along the tube (m).");
+  prm.declare_entry("Mesh scale", "1", Patterns::Double(1e-3, 100),
+                    "Multiplies both edge lengths: 0.5 halves them (about four times the "
+                    "vertices). About 0.63 gives the paper's fine 1397-vertex '4 5T'.");
+  prm.leave_subsection();
+}
+
+void declare_material(ParameterHandler& prm) {
+  prm.enter_subsection("Material");
+  prm.declare_entry("Law", "linear biot",
+                    Patterns::Selection("linear biot|st venant kirchhoff|neo hookean"),
+                    material_law_descriptions());
+  prm.declare_entry("Stiffness weft", "130", Patterns::Double(0),
+                    "Membrane stiffness E t along the weft/course (N/m; 1 N/cm = 100 N/m). "
+                    "Table 2: 1.3 N/cm.");
+  prm.declare_entry("Stiffness warp", "70", Patterns::Double(0),
+                    "Membrane stiffness E t along the warp/wale (N/m). Table 2: 0.7 N/cm.");
+  prm.declare_entry("Poisson ratio weft-warp", "0.2021", Patterns::Double(0, 0.99),
+                    "nu12: contraction along the warp per stretch along the weft (-). Table 2: "
+                    "0.3499 at 500 g, 0.2021 at 1000 g.");
+  prm.declare_entry("Shear stiffness", "30", Patterns::Double(0),
+                    "In-plane shear stiffness G12 t (N/m). Not measured in the paper.");
+  prm.declare_entry("Thickness", "0.00039", Patterns::Double(0),
+                    "Rest thickness (m). Table 2: 0.039 cm.");
+  prm.declare_entry("Areal density", "0.1057", Patterns::Double(0),
+                    "Mass per rest area (kg/m^2). Table 2: 1.057e-5 kg/cm^2.");
+  prm.declare_entry("Neo-Hookean shear modulus", "85470.0854700855", Patterns::Double(0),
+                    "Shear modulus G of the neo-hookean law (Pa). Default: 3 G t = 100 N/m, "
+                    "the mean of the two stiffnesses.");
+  prm.leave_subsection();
+}
+
+void declare_body(ParameterHandler& prm) {
+  prm.enter_subsection("Body");
+  prm.declare_entry("Type", "cylinder", Patterns::Selection("cylinder"),
+                    "The rigid body the garment is worn on.");
+  prm.declare_entry("Initial radius", "0.05", Patterns::Double(0),
+                    "Radius of the cylinder the garment first settles on (m). Table 3: 5 cm.");
+  prm.declare_entry("Axis point", "0,0,0", vec3_pattern, "A point on the cylinder's axis (m).");
+  prm.declare_entry("Axis", "1,0,0", vec3_pattern,
+                    "Direction of the cylinder's axis (-). Horizontal by default, as in the "
+                    "paper's Figure 13, so that gravity acts across it.");
+  prm.declare_entry("Display height", "0.24", Patterns::Double(0),
+                    "Length of cylinder drawn in the body's VTU (m); contact is unbounded.");
+  prm.leave_subsection();
+}
+
+void declare_contact(ParameterHandler& prm) {
+  prm.enter_subsection("Contact");
+  prm.declare_entry("Penalty factor", "100", Patterns::Double(1e-3),
+                    "beta in the penalty stiffness k = beta Y / h^2 (Pa/m), Y the law's "
+                    "stiffness scale, h the mean rest edge length (-). The penetration is "
+                    "p / k; docs/model.md gives its effect on the pressure.");
+  prm.leave_subsection();
+}
+
+void declare_protocol(ParameterHandler& prm) {
+  prm.enter_subsection("Protocol");
+  prm.declare_entry("End condition", "free", Patterns::Selection("free|held"),
+                    "free: no axial force at the tube's ends (the paper's assumption); held: "
+                    "the end rows keep their axial position (axial stretch 1).");
+  prm.declare_entry("Final alpha", "1.8", Patterns::Double(0),
+                    "The last load step's deformation ratio alpha = r / R0 (-).");
+  prm.declare_entry("Alpha increment", "0.05", Patterns::Double(1e-4),
+                    "After settling on the initial radius, the cylinder grows through every "
+                    "multiple of this alpha up to the final one (-).");
+  prm.declare_entry("Gravity while settling", "false", Patterns::Bool(),
+                    "Gravity on while the garment first settles (the paper: it speeds settling).");
+  prm.declare_entry("Gravity while measuring", "false", Patterns::Bool(),
+                    "Gravity on during the growth steps (the paper turns it off: Figure 13).");
+  prm.declare_entry("Gravity", "9.81", Patterns::Double(0), "Acceleration of gravity (m/s^2).");
+  prm.declare_entry("Up", "0,0,1", vec3_pattern, "Direction opposite to gravity (-).");
+  prm.leave_subsection();
+}
+
+void declare_pressure(ParameterHandler& prm) {
+  prm.enter_subsection("Pressure");
+  prm.declare_entry("Vertex area", "barycentric",
+                    Patterns::Selection("barycentric|adjacent triangles"),
+                    "Area a vertex's normal force is divided by: barycentric (a third of each "
+                    "adjacent triangle; balances forces) or adjacent triangles (the paper's "
+                    "Section 2.2: reads a third of the pressure).");
+  prm.declare_entry("Angle bins", "36", Patterns::Integer(1, 3600),
+                    "Sectors round the cylinder for pressure_theta.csv (-).");
+  prm.leave_subsection();
+}
+
+void declare_output(ParameterHandler& prm) {
+  prm.enter_subsection("Output");
+  prm.declare_entry("Directory", "output", Patterns::Anything(),
+                    "Where the tables and VTU files go; --output overrides it.");
+  prm.declare_entry("Write VTU", "true", Patterns::Bool(),
+                    "Write one VTU per load step for the garment and the body, with .pvd "
+                    "time series for ParaView.");
+  prm.leave_subsection();
+}
+
+void declare_case_parameters(ParameterHandler& prm) {
+  declare_garment(prm);
+  declare_material(prm);
+  declare_body(prm);
+  declare_contact(prm);
+  declare_protocol(prm);
+  declare_pressure(prm);
+  declare_output(prm);
+  const BackendRegistry& registry = backend_registry();
+  prm.enter_subsection("Solver");
+  prm.declare_entry("Backend", "massspring", Patterns::Selection(registry.names_joined("|")),
+                    "The cloth solver: massspring (the paper's particle model with RK4) or fem "
+                    "(a finite-element membrane solved by Newton's method).");
+  prm.leave_subsection();
+  for (const BackendEntry& entry : registry.entries()) entry.declare_parameters(prm);
+}
+
+}  // namespace
+
+namespace {
+
+CaseParameters parse_case_parameters(ParameterHandler& prm) {
+  CaseParameters c;
+  prm.enter_subsection("Garment");
+  c.garment.name = prm.get("Name");
+  c.garment.panel_width_m = prm.get_double("Panel width");
+  c.garment.panel_height_m = prm.get_double("Panel height");
+  c.garment.n_panels = prm.get_integer("Number of panels");
+  c.garment.mesh_scale = prm.get_double("Mesh scale");
+  c.garment.spacing.along_x_m = prm.get_double("Edge length weft") * c.garment.mesh_scale;
+  c.garment.spacing.along_y_m = prm.get_double("Edge length warp") * c.garment.mesh_scale;
+  prm.leave_subsection();
+
+  prm.enter_subsection("Material");
+  c.law = prm.get("Law");
+  c.fabric.stiffness_weft_N_per_m = prm.get_double("Stiffness weft");
+  c.fabric.stiffness_warp_N_per_m = prm.get_double("Stiffness warp");
+  c.fabric.poisson_weft_warp = prm.get_double("Poisson ratio weft-warp");
+  c.fabric.shear_stiffness_N_per_m = prm.get_double("Shear stiffness");
+  c.fabric.thickness_m = prm.get_double("Thickness");
+  c.fabric.areal_density_kg_per_m2 = prm.get_double("Areal density");
+  c.fabric.neo_hookean_shear_modulus_Pa = prm.get_double("Neo-Hookean shear modulus");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Body");
+  c.body.initial_radius_m = prm.get_double("Initial radius");
+  c.body.axis_point_m = parse_vec3(prm.get("Axis point"));
+  c.body.axis = parse_vec3(prm.get("Axis"));
+  c.body.display_height_m = prm.get_double("Display height");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Contact");
+  c.penalty_factor = prm.get_double("Penalty factor");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Protocol");
+  c.protocol.end_condition =
+      prm.get("End condition") == "held" ? EndCondition::held_ends : EndCondition::free_ends;
+  c.protocol.final_alpha = prm.get_double("Final alpha");
+  c.protocol.alpha_increment = prm.get_double("Alpha increment");
+  c.protocol.gravity_while_settling = prm.get_bool("Gravity while settling");
+  c.protocol.gravity_while_measuring = prm.get_bool("Gravity while measuring");
+  c.protocol.gravity_m_per_s2 = prm.get_double("Gravity");
+  c.protocol.up = parse_vec3(prm.get("Up"));
+  prm.leave_subsection();
+
+  prm.enter_subsection("Pressure");
+  c.pressure.vertex_area = prm.get("Vertex area") == "barycentric"
+                               ? VertexAreaDefinition::barycentric
+                               : VertexAreaDefinition::adjacent_triangles;
+  c.pressure.angle_bins = prm.get_integer("Angle bins");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Output");
+  c.output.directory = prm.get("Directory");
+  c.output.write_vtu = prm.get_bool("Write VTU");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Solver");
+  c.backend = prm.get("Backend");
+  prm.leave_subsection();
+
+  auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw std::invalid_argument(message);
+  };
+  require(c.body.axis.norm() > 0, "Body/Axis must not be zero");
+  require(c.protocol.up.norm() > 0, "Protocol/Up must not be zero");
+  require(c.body.initial_radius_m > 0, "Body/Initial radius must be positive (m)");
+  c.fabric.validate();
+  return c;
+}
+
+// deal.II's messages carry the source location and a stack trace; users need the part that
+// says what is wrong ("Additional information").
+std::string user_message(const std::exception& e) {
+  const std::string full = e.what();
+  const std::string marker = "Additional information:";
+  auto begin = full.find(marker);
+  if (begin == std::string::npos) return full;
+  begin += marker.size();
+  auto end = full.find("Stacktrace:", begin);
+  std::string text = full.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+  std::string folded;
+  bool space = false;
+  for (char ch : text) {
+    const bool blank = ch == ' ' || ch == '\n' || ch == '\t';
+    if (blank && !folded.empty()) space = true;
+    if (!blank) {
+      if (space) folded += ' ';
+      folded += ch;
+      space = false;
+    }
+  }
+  return folded;
+}
+
+}  // namespace
+
+CaseFile::CaseFile() : prm_(std::make_unique<ParameterHandler>()) {
+  declare_case_parameters(*prm_);
+}
+
+CaseFile::~CaseFile() = default;
+
+void CaseFile::set(const std::string& assignment) {
+  ParameterHandler& prm = *prm_;
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos)
+    throw std::runtime_error("--set \"" + assignment + "\": expected \"Path/To/Entry=value\"");
+  std::string path = assignment.substr(0, equals);
+  const std::string value = assignment.substr(equals + 1);
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const auto slash = path.find('/', start);
+    parts.push_back(path.substr(start, slash - start));
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  int depth = 0;
+  try {
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i, ++depth) prm.enter_subsection(parts[i]);
+    prm.set(parts.back(), value);
+  } catch (const std::exception& e) {
+    for (; depth > 0; --depth) prm.leave_subsection();
+    throw std::runtime_error("--set \"" + assignment + "\": " + user_message(e) +
+                             " (tightfit --print-parameters lists every entry)");
+  }
+  for (; depth > 0; --depth) prm.leave_subsection();
+}
+
+void CaseFile::read(const std::string& path, const std::vector<std::string>& overrides) {
+  if (!std::ifstream(path)) throw std::runtime_error("cannot open the case file '" + path + "'");
+  try {
+    prm_->parse_input(path, "", false, false);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("case file '" + path + "': " + user_message(e));
+  }
+  for (const auto& assignment : overrides) set(assignment);
+}
+
+CaseParameters CaseFile::parameters() const {
+  return parse_case_parameters(*prm_);
+}
+
+std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
+                                                  const Problem& problem) const {
+  return backend_registry().find(name).create(problem, *prm_);
+}
+
+void CaseFile::print(std::ostream& out, bool as_prm) const {
+  prm_->print_parameters(out, as_prm ? ParameterHandler::PRM : ParameterHandler::Text);
+}
+
+}  // namespace tightfit

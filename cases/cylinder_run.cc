@@ -1,0 +1,121 @@
+#include "cases/cylinder_run.h"
+
+#include "core/units.h"
+#include "io/csv_table.h"
+#include "io/pvd_writer.h"
+#include "io/vtu_writer.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+
+namespace tightfit {
+
+std::vector<std::string> pressure_table_columns() {
+  return {"step",        "radius_m",   "alpha",         "p_mean_Pa",   "p_std_Pa",
+          "p_theory_Pa", "rel_error",  "p_mean_gf_cm2", "p_mean_mmHg", "contact_fraction",
+          "p_eq7_Pa",    "p_min_Pa",   "p_max_Pa",      "vertex_area", "iterations",
+          "residual_N",  "wall_time_s"};
+}
+
+namespace {
+
+std::vector<CsvCell> pressure_row(const StepMeasurement& m) {
+  const PressureSummary& s = m.summary;
+  return {m.step,
+          m.radius_m,
+          m.alpha,
+          s.mean_Pa,
+          s.std_Pa,
+          m.p_theory_Pa,
+          m.rel_error,
+          units::to_gf_per_cm2(s.mean_Pa),
+          units::to_mmHg(s.mean_Pa),
+          s.contact_fraction,
+          m.p_eq7_Pa,
+          s.min_Pa,
+          s.max_Pa,
+          to_string(m.field.area_definition),
+          m.report.iterations,
+          m.report.residual_N,
+          m.report.wall_seconds};
+}
+
+void write_angular_profile(const std::string& path, const CylinderSetup& setup,
+                           const StepMeasurement& m) {
+  const AngularProfile profile = pressure_against_angle(m.field, m.state.positions_m, *setup.body,
+                                                        setup.parameters.pressure.angle_bins);
+  CsvTable table(path, {"theta_deg", "pressure_Pa", "n_vertices", "p_theory_Pa", "alpha"});
+  for (std::size_t b = 0; b < profile.theta_deg.size(); ++b)
+    table.write_row({profile.theta_deg[b], profile.pressure_Pa[b], profile.n_vertices[b],
+                     m.p_theory_Pa, m.alpha});
+}
+
+void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_steps) {
+  char line[256];
+  std::snprintf(
+      line, sizeof line,
+      "  step %2d/%zu  alpha %.3f  r %6.2f mm  p %8.2f Pa (%6.3f gf/cm2)  theory %8.2f Pa", m.step,
+      n_steps - 1, m.alpha, 1e3 * m.radius_m, m.p_mean_Pa(), units::to_gf_per_cm2(m.p_mean_Pa()),
+      m.p_theory_Pa);
+  log << line;
+  if (std::isfinite(m.rel_error)) {
+    std::snprintf(line, sizeof line, " (%+6.2f%%)", 100.0 * m.rel_error);
+    log << line;
+  }
+  std::snprintf(line, sizeof line, "  %d it  %.2f s", m.report.iterations, m.report.wall_seconds);
+  log << line << std::endl;
+}
+
+}  // namespace
+
+RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_backend,
+                            const std::string& output_dir, std::ostream& log) {
+  namespace fs = std::filesystem;
+  fs::create_directories(output_dir);
+  const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
+
+  RunResult result;
+  std::unique_ptr<Backend> backend = make_backend(setup.problem);
+  result.backend = backend->name();
+  setup.prepare_step(0);
+  backend->set_positions(setup.initial_positions());
+
+  CsvTable table(path("pressure.csv"), pressure_table_columns());
+  const bool write_vtu = setup.parameters.output.write_vtu;
+  std::unique_ptr<PvdWriter> garment_series, body_series;
+  if (write_vtu) {
+    garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
+    body_series = std::make_unique<PvdWriter>(path("body.pvd"));
+  }
+
+  for (std::size_t step = 0; step < setup.alphas.size(); ++step) {
+    try {
+      result.steps.push_back(solve_and_measure(setup, *backend, static_cast<int>(step)));
+    } catch (const SolverError& e) {
+      result.failure = e.what();
+      log << "  stopped: " << e.what() << std::endl;
+      break;
+    }
+    const StepMeasurement& m = result.steps.back();
+    table.write_row(pressure_row(m));
+    if (write_vtu) {
+      char name[64];
+      std::snprintf(name, sizeof name, "garment_%04zu.vtu", step);
+      write_garment_vtu(path(name), setup.mesh, m.state, m.field, m.alpha);
+      garment_series->add(m.alpha, name);
+      std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
+      write_body_vtu(path(name), setup.body->display_mesh());
+      body_series->add(m.alpha, name);
+    }
+    print_progress(log, m, setup.alphas.size());
+  }
+  if (!result.steps.empty())
+    write_angular_profile(path("pressure_theta.csv"), setup, result.steps.back());
+  result.completed = result.failure.empty();
+  return result;
+}
+
+}  // namespace tightfit

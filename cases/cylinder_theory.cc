@@ -1,0 +1,57 @@
+#include "cases/cylinder_theory.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace tightfit {
+
+const char* to_string(EndCondition ends) {
+  return ends == EndCondition::free_ends ? "free" : "held";
+}
+
+double axial_stretch(const std::string& law_name, EndCondition ends, const FabricParameters& fabric,
+                     double alpha) {
+  if (ends == EndCondition::held_ends) return 1.0;
+  const double nu12 = fabric.poisson_weft_warp, a = alpha;
+  if (law_name == "linear biot") return 1.0 - nu12 * (a - 1.0);
+  if (law_name == "st venant kirchhoff") {
+    const double b_squared = 1.0 - nu12 * (a * a - 1.0);
+    return b_squared > 0 ? std::sqrt(b_squared) : std::numeric_limits<double>::quiet_NaN();
+  }
+  if (law_name == "neo hookean") return 1.0 / std::sqrt(a);
+  throw std::invalid_argument("no closed form for law '" + law_name + "'");
+}
+
+double closed_form_pressure_Pa(const std::string& law_name, EndCondition ends,
+                               const FabricParameters& fabric, double rest_radius_m, double alpha) {
+  if (alpha <= 1.0) return 0.0;
+  const double a = alpha, R0 = rest_radius_m;
+  const double Y1 = fabric.stiffness_weft_N_per_m;
+  const double nu12 = fabric.poisson_weft_warp, nu21 = fabric.poisson_warp_weft();
+  const bool held = ends == EndCondition::held_ends;
+  if (law_name == "linear biot") {
+    // Table "Results", rows 1-2.
+    return held ? Y1 * (1.0 - 1.0 / a) / (R0 * (1.0 - nu12 * nu21))
+                : Y1 * (1.0 - 1.0 / a) / (R0 * (1.0 - nu12 * (a - 1.0)));
+  }
+  if (law_name == "st venant kirchhoff") {
+    // Rows 3-4.
+    if (held) return Y1 * (a * a - 1.0) / (2.0 * R0 * (1.0 - nu12 * nu21));
+    return Y1 * (a * a - 1.0) / (2.0 * R0 * axial_stretch(law_name, ends, fabric, a));
+  }
+  if (law_name == "neo hookean") {
+    // Rows 5-6; row 5 is the paper's Eq. 8.
+    const double Gt = fabric.neo_hookean_shear_modulus_Pa * fabric.thickness_m;
+    return held ? Gt * (1.0 - std::pow(a, -4.0)) / R0
+                : Gt * (std::sqrt(a) - std::pow(a, -2.5)) / R0;
+  }
+  throw std::invalid_argument("no closed form for law '" + law_name + "'");
+}
+
+double paper_eq7_pressure_Pa(double hoop_stiffness_N_per_m, double rest_radius_m, double alpha) {
+  if (alpha <= 1.0) return 0.0;
+  return hoop_stiffness_N_per_m * (1.0 - 1.0 / alpha) / rest_radius_m;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,31 @@
+#include "cases/tube_placement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tightfit {
+
+std::vector<Vec3> place_tube_round_cylinder(const Garment& garment, const SimulationMesh& mesh,
+                                            const Cylinder& cylinder, double radius_m) {
+  if (!(garment.ring_circumference_m > 0))
+    throw std::invalid_argument("garment '" + garment.name + "' is not a closed tube");
+  double v_min = mesh.layout_positions_m.front().y(), v_max = v_min;
+  for (const Vec2& p : mesh.layout_positions_m) {
+    v_min = std::min(v_min, p.y());
+    v_max = std::max(v_max, p.y());
+  }
+  const Vec3 e1 = cylinder.reference_direction();
+  const Vec3 e2 = cylinder.axis().cross(e1);
+  std::vector<Vec3> x(mesh.n_vertices);
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
+    const Vec2& p = mesh.layout_positions_m[u];
+    const double angle = 2.0 * M_PI * p.x() / garment.ring_circumference_m;
+    x[mesh.welded_index[u]] = cylinder.point_on_axis_m() +
+                              (p.y() - 0.5 * (v_min + v_max)) * cylinder.axis() +
+                              radius_m * (std::cos(angle) * e1 + std::sin(angle) * e2);
+  }
+  return x;
+}
+
+}  // namespace tightfit

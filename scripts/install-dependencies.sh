@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs what tightfit needs from Debian 12's packages, skipping what is already installed.
+# Safe to run any number of times.
+set -euo pipefail
+
+packages=(
+  cmake make g++                 # build tools
+  libdeal.ii-dev openmpi-bin     # deal.II 9.4 with PETSc, MPI and p4est; mpirun
+  libeigen3-dev libvtk9-dev      # small dense algebra; VTU output
+  libgtest-dev libbenchmark-dev  # tests and benchmarks
+  gnuplot-nox                    # plots
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "tightfit: every dependency is installed"
+  exit 0
+fi
+
+echo "tightfit: installing ${missing[*]}"
+as_root=()
+[ "$(id -u)" -eq 0 ] || as_root=(sudo)
+"${as_root[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -qq --no-install-recommends \
+  "${missing[@]}"
