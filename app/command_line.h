@@ -14,6 +14,7 @@ struct CommandLine {
   std::vector<std::string> overrides;  // "Path/To/Entry=value"
   int levels = 3;                      // convergence: number of meshes
   bool parameters_as_prm = false;      // print-parameters --prm
+  bool this_rank_writes = true;        // false on every MPI rank but the first
 };
 
 // Thrown for a malformed command line; the message says what is wrong.

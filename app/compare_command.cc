@@ -13,7 +13,9 @@ namespace tightfit {
 int compare_command(const CommandLine& cl, std::ostream& out) {
   CaseFile file;
   file.read(cl.case_files.front(), cl.overrides);
-  auto setup = make_cylinder_setup(file.parameters());
+  CaseParameters parameters = file.parameters();
+  parameters.output.write_files = cl.this_rank_writes;
+  auto setup = make_cylinder_setup(parameters);
   const std::string dir = output_directory_for(cl, cl.case_files.front(),
                                                setup->parameters.output.directory + "_compare");
   const auto& entries = backend_registry().entries();

@@ -3,30 +3,37 @@
 #include "app/command_line.h"
 #include "app/compare_command.h"
 #include "app/convergence_command.h"
+#include "app/mpi_session.h"
 #include "app/run_command.h"
 #include "cases/case_parameters.h"
 
 #include <iostream>
+#include <sstream>
 
 int main(int argc, char** argv) {
   using namespace tightfit;
+  MpiSession mpi(argc, argv);
+  // Every rank computes; the first one alone prints and writes.
+  std::ostringstream discarded;
+  std::ostream& out = mpi.is_first_rank() ? std::cout : discarded;
   try {
-    const CommandLine cl = parse_command_line(argc, argv);
+    CommandLine cl = parse_command_line(argc, argv);
+    cl.this_rank_writes = mpi.is_first_rank();
     if (cl.command == "help") {
-      std::cout << usage_text();
+      out << usage_text();
       return 0;
     }
     if (cl.command == "version") {
-      std::cout << "tightfit 0.1.0\n";
+      out << "tightfit 0.1.0\n";
       return 0;
     }
     if (cl.command == "print-parameters") {
-      CaseFile().print(std::cout, cl.parameters_as_prm);
+      CaseFile().print(out, cl.parameters_as_prm);
       return 0;
     }
-    if (cl.command == "run") return run_command(cl, std::cout);
-    if (cl.command == "compare") return compare_command(cl, std::cout);
-    if (cl.command == "convergence") return convergence_command(cl, std::cout);
+    if (cl.command == "run") return run_command(cl, out);
+    if (cl.command == "compare") return compare_command(cl, out);
+    if (cl.command == "convergence") return convergence_command(cl, out);
     std::cerr << "tightfit: '" << cl.command << "' is not available yet\n";
     return 2;
   } catch (const UsageError& e) {

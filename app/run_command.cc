@@ -25,7 +25,9 @@ int run_command(const CommandLine& cl, std::ostream& out) {
   for (const std::string& path : cl.case_files) {
     files.push_back(std::make_unique<CaseFile>());
     files.back()->read(path, cl.overrides);
-    setups.push_back(make_cylinder_setup(files.back()->parameters()));
+    CaseParameters parameters = files.back()->parameters();
+    parameters.output.write_files = cl.this_rank_writes;
+    setups.push_back(make_cylinder_setup(parameters));
   }
 
   int status = 0;

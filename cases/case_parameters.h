@@ -52,6 +52,8 @@ struct PressureSettings {
 struct OutputSettings {
   std::string directory = "output";
   bool write_vtu = true;
+  // False on every MPI rank but the first: the ranks share one result, one of them writes it.
+  bool write_files = true;
 };
 
 struct CaseParameters {

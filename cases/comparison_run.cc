@@ -38,6 +38,7 @@ ComparisonResult run_comparison(CylinderSetup& setup, const std::string& first_n
   log << "Backend " << second_name << ":\n";
   result.second = run_cylinder_case(setup, make_second, path(second_name), log);
 
+  if (!setup.parameters.output.write_files) return result;
   CsvTable table(path("compare.csv"),
                  {"step", "alpha", "p_mean_Pa_" + first_name, "p_mean_Pa_" + second_name,
                   "p_theory_Pa", "rel_diff", "p_std_Pa_" + first_name, "p_std_Pa_" + second_name,

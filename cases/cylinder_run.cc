@@ -74,7 +74,8 @@ void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_s
 RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_backend,
                             const std::string& output_dir, std::ostream& log) {
   namespace fs = std::filesystem;
-  fs::create_directories(output_dir);
+  const bool write_files = setup.parameters.output.write_files;
+  if (write_files) fs::create_directories(output_dir);
   const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
 
   RunResult result;
@@ -83,8 +84,10 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
   setup.prepare_step(0);
   backend->set_positions(setup.initial_positions());
 
-  CsvTable table(path("pressure.csv"), pressure_table_columns());
-  const bool write_vtu = setup.parameters.output.write_vtu;
+  std::unique_ptr<CsvTable> table;
+  if (write_files)
+    table = std::make_unique<CsvTable>(path("pressure.csv"), pressure_table_columns());
+  const bool write_vtu = write_files && setup.parameters.output.write_vtu;
   std::unique_ptr<PvdWriter> garment_series, body_series;
   if (write_vtu) {
     garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
@@ -100,7 +103,7 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
       break;
     }
     const StepMeasurement& m = result.steps.back();
-    table.write_row(pressure_row(m));
+    if (table) table->write_row(pressure_row(m));
     if (write_vtu) {
       char name[64];
       std::snprintf(name, sizeof name, "garment_%04zu.vtu", step);
@@ -112,7 +115,7 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     }
     print_progress(log, m, setup.alphas.size());
   }
-  if (!result.steps.empty())
+  if (write_files && !result.steps.empty())
     write_angular_profile(path("pressure_theta.csv"), setup, result.steps.back());
   result.completed = result.failure.empty();
   return result;

@@ -1,29 +1,16 @@
 #include "cases/cylinder_setup.h"
 
 #include "cases/load_steps.h"
-#include "cases/tube_placement.h"
 #include "contact/penalty_contact.h"
+#include "contact/tube_placement.h"
 #include "core/tube_garment.h"
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
 namespace tightfit {
-
-double mean_rest_edge_length(const SimulationMesh& mesh) {
-  std::set<std::pair<int, int>> seen;
-  double total = 0.0;
-  for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
-    for (int i = 0; i < 3; ++i) {
-      const int a = mesh.triangles[k][i], b = mesh.triangles[k][(i + 1) % 3];
-      if (!seen.insert(std::minmax(a, b)).second) continue;
-      total += (mesh.rest_triangles[k][(i + 1) % 3] - mesh.rest_triangles[k][i]).norm();
-    }
-  return seen.empty() ? 0.0 : total / seen.size();
-}
 
 std::unique_ptr<CylinderSetup> make_cylinder_setup(const CaseParameters& parameters) {
   auto setup = std::make_unique<CylinderSetup>();
@@ -34,7 +21,7 @@ std::unique_ptr<CylinderSetup> make_cylinder_setup(const CaseParameters& paramet
   s.mesh = weld(s.garment);
   s.law = make_material_law(parameters.law, parameters.fabric);
   s.rest_radius_m = s.garment.ring_circumference_m / (2.0 * M_PI);
-  s.mean_edge_length_m = mean_rest_edge_length(s.mesh);
+  s.mean_edge_length_m = mean_rest_edge_length_m(s.mesh);
   s.body = std::make_unique<Cylinder>(parameters.body.axis_point_m, parameters.body.axis,
                                       parameters.body.initial_radius_m,
                                       parameters.body.display_height_m);

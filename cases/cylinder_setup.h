@@ -34,7 +34,4 @@ struct CylinderSetup {
 // can never press on the body, a bad value).
 std::unique_ptr<CylinderSetup> make_cylinder_setup(const CaseParameters& parameters);
 
-// Mean rest length of the mesh's edges, m.
-double mean_rest_edge_length(const SimulationMesh& mesh);
-
 }  // namespace tightfit

@@ -75,4 +75,12 @@ SimulationMesh weld(const Garment& garment);
 std::vector<double> rest_triangle_areas(const SimulationMesh& mesh);
 double rest_area(const SimulationMesh& mesh);
 
+// Barycentric rest area of every welded vertex, m^2: a third of each adjacent triangle's rest
+// area, so the areas sum to the garment's rest area.
+std::vector<double> rest_vertex_areas_m2(const SimulationMesh& mesh);
+
+// Mean length of the mesh's rest edges (each edge counted once), m: the length scale of stop
+// rules and of the penalty stiffness.
+double mean_rest_edge_length_m(const SimulationMesh& mesh);
+
 }  // namespace tightfit

@@ -4,6 +4,7 @@
 
 #include "contact/cylinder.h"
 #include "contact/pressure_extractor.h"
+#include "contact/tube_placement.h"
 #include "core/backend.h"
 #include "core/material.h"
 #include "core/tube_garment.h"
@@ -46,15 +47,7 @@ struct TubeCase {
   // The tube as a circle of radius `radius_m`: layout (u, v) goes to angle 2 pi u / L and
   // axial coordinate v - H/2; the triangles' winding then gives outward normals.
   std::vector<Vec3> placed(double radius_m) const {
-    std::vector<Vec3> x(mesh.n_vertices);
-    const double L = garment.ring_circumference_m;
-    for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
-      const Vec2& p = mesh.layout_positions_m[u];
-      const double angle = 2.0 * M_PI * p.x() / L;
-      x[mesh.welded_index[u]] =
-          Vec3(radius_m * std::cos(angle), radius_m * std::sin(angle), p.y() - 0.5 * height_m);
-    }
-    return x;
+    return place_tube_round_cylinder(garment, mesh, *cylinder, radius_m);
   }
 
   // Sets the cylinder to alpha R0.
@@ -65,23 +58,5 @@ struct TubeCase {
         extract_pressure(mesh.triangles, state, VertexAreaDefinition::barycentric, cylinder.get()));
   }
 };
-
-// cylinder-theory.md, "Results": pressure on a cylinder of radius alpha R0, Pa.
-inline double closed_form_pressure_Pa(const std::string& law, EndCondition ends, double a,
-                                      const FabricParameters& f, double R0) {
-  const double Y1 = f.stiffness_weft_N_per_m;
-  const double nu12 = f.poisson_weft_warp, nu21 = f.poisson_warp_weft();
-  const double Gt0 = f.neo_hookean_shear_modulus_Pa * f.thickness_m;
-  const bool free_ends = ends == EndCondition::free_ends;
-  if (law == "linear biot")
-    return free_ends ? Y1 * (1 - 1 / a) / (R0 * (1 - nu12 * (a - 1)))
-                     : Y1 * (1 - 1 / a) / (R0 * (1 - nu12 * nu21));
-  if (law == "st venant kirchhoff")
-    return free_ends ? Y1 * (a * a - 1) / (2 * R0 * std::sqrt(1 - nu12 * (a * a - 1)))
-                     : Y1 * (a * a - 1) / (2 * R0 * (1 - nu12 * nu21));
-  // Incompressible neo-Hookean.
-  return free_ends ? Gt0 * (std::sqrt(a) - std::pow(a, -2.5)) / R0
-                   : Gt0 * (1 - std::pow(a, -4)) / R0;
-}
 
 }  // namespace tightfit::testing

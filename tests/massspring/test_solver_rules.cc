@@ -76,7 +76,7 @@ TEST(MassSpringSolver, NonConvergenceThrowsNamingTheStepAndResidual) {
   MassSpringBackend backend(tube.problem, parameters);
   // Start at the rest radius, deep inside the cylinder: three frames cannot settle that.
   backend.set_positions(
-      sewn_tube_positions(tube.mesh, tube.circumference_m, tube.height_m, tube.rest_radius_m()));
+      place_tube_round_cylinder(tube.garment, tube.mesh, tube.cylinder, tube.rest_radius_m()));
   try {
     backend.solve(LoadStep{7, 1.5, false});
     FAIL() << "expected SolverError";

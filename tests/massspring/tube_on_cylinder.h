@@ -4,10 +4,10 @@
 
 #include "contact/cylinder.h"
 #include "contact/penalty_contact.h"
+#include "contact/tube_placement.h"
 #include "core/tube_garment.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/massspring_backend.h"
-#include "massspring/sewn_tube_placement.h"
 
 #include <cmath>
 #include <memory>
@@ -17,6 +17,7 @@ namespace tightfit::test {
 struct TubeOnCylinder {
   static constexpr double height_m = 0.24;
   double circumference_m;
+  Garment garment;
   SimulationMesh mesh;
   FabricParameters fabric;
   std::unique_ptr<MaterialLaw> law;
@@ -25,7 +26,8 @@ struct TubeOnCylinder {
 
   TubeOnCylinder(double panel_width_m, const MeshSpacing& spacing, double poisson = 0.0)
       : circumference_m(2 * panel_width_m),
-        mesh(weld(make_tube_garment("tube", panel_width_m, height_m, 2, spacing))),
+        garment(make_tube_garment("tube", panel_width_m, height_m, 2, spacing)),
+        mesh(weld(garment)),
         cylinder(Vec3::Zero(), Vec3::UnitZ(), rest_radius_m()) {
     fabric.poisson_weft_warp = poisson;
     law = make_material_law("linear biot", fabric);
@@ -40,8 +42,8 @@ struct TubeOnCylinder {
   double rest_radius_m() const { return circumference_m / (2 * M_PI); }
   // The sewn tube as a circle round the cylinder of radius max(R0, r).
   std::vector<Vec3> start_positions() const {
-    return sewn_tube_positions(mesh, circumference_m, height_m,
-                               std::max(rest_radius_m(), cylinder.radius_m()));
+    return place_tube_round_cylinder(garment, mesh, cylinder,
+                                     std::max(rest_radius_m(), cylinder.radius_m()));
   }
   // The paper's Eq. 7: p = Et (1 - 1/alpha) / R0, hoop = weft.
   double eq7_pressure_Pa(double alpha) const {

@@ -1,4 +1,4 @@
-#include "cases/tube_placement.h"
+#include "contact/tube_placement.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,25 @@
+// MPI (and PETSc, through deal.II) for the whole run: started before anything else, finished
+// after everything else. Under `mpirun -np N` the ranks share the FE backend's solves; the
+// first rank alone prints and writes files.
+#pragma once
+
+#include <memory>
+
+namespace tightfit {
+
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  bool is_first_rank() const;
+  int n_ranks() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace tightfit
