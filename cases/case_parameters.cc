@@ -120,10 +120,11 @@ void declare_protocol(ParameterHandler& prm) {
 void declare_pressure(ParameterHandler& prm) {
   prm.enter_subsection("Pressure");
   prm.declare_entry("Vertex area", "barycentric",
-                    Patterns::Selection("barycentric|adjacent triangles"),
+                    Patterns::Selection("barycentric|mixed voronoi|adjacent triangles"),
                     "Area a vertex's normal force is divided by: barycentric (a third of each "
-                    "adjacent triangle; balances forces) or adjacent triangles (the paper's "
-                    "Section 2.2: reads a third of the pressure).");
+                    "adjacent triangle; balances forces), mixed voronoi (Meyer et al. 2003; also "
+                    "balances forces, smoother on irregular meshes) or adjacent triangles (the "
+                    "paper's Section 2.2: reads a third of the pressure).");
   prm.declare_entry("Angle bins", "36", Patterns::Integer(1, 3600),
                     "Sectors round the cylinder for pressure_theta.csv (-).");
   prm.leave_subsection();
@@ -206,9 +207,10 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   prm.leave_subsection();
 
   prm.enter_subsection("Pressure");
-  c.pressure.vertex_area = prm.get("Vertex area") == "barycentric"
-                               ? VertexAreaDefinition::barycentric
-                               : VertexAreaDefinition::adjacent_triangles;
+  const std::string area = prm.get("Vertex area");
+  c.pressure.vertex_area = area == "barycentric"     ? VertexAreaDefinition::barycentric
+                           : area == "mixed voronoi" ? VertexAreaDefinition::mixed_voronoi
+                                                     : VertexAreaDefinition::adjacent_triangles;
   c.pressure.angle_bins = prm.get_integer("Angle bins");
   prm.leave_subsection();
 
