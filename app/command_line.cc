@@ -14,8 +14,9 @@ Usage:
       Runs the case on both backends on the same mesh and writes compare.csv.
   tightfit convergence CASE.prm [--levels N] [--output DIR] [--set ...]
       Runs the case on N meshes, halving the edge length each time, on both backends.
-  tightfit --print-parameters [--prm]
-      Lists every parameter with its documentation, unit and default (--prm: as a case file).
+  tightfit --print-parameters [--prm | --json]
+      Lists every parameter with its documentation, unit and default (--prm: as a case file to
+      start from; --json: with each entry's allowed values).
   tightfit --help | --version
 
 Every parameter is in SI units (m, N/m, Pa, kg/m^2); tables also show gf/cm^2 and mmHg.
@@ -39,9 +40,9 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
   if (first == "--print-parameters") {
     cl.command = "print-parameters";
     for (std::size_t i = 1; i < args.size(); ++i) {
-      if (args[i] != "--prm")
-        throw UsageError("--print-parameters takes only --prm, not '" + args[i] + "'");
-      cl.parameters_as_prm = true;
+      if (args[i] != "--prm" && args[i] != "--json")
+        throw UsageError("--print-parameters takes --prm or --json, not '" + args[i] + "'");
+      cl.parameters_format = args[i].substr(2);
     }
     return cl;
   }

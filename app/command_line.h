@@ -10,11 +10,11 @@ namespace tightfit {
 struct CommandLine {
   std::string command;  // run, compare, convergence, print-parameters, help, version
   std::vector<std::string> case_files;
-  std::string output_dir;              // empty: the case's Output/Directory
-  std::vector<std::string> overrides;  // "Path/To/Entry=value"
-  int levels = 3;                      // convergence: number of meshes
-  bool parameters_as_prm = false;      // print-parameters --prm
-  bool this_rank_writes = true;        // false on every MPI rank but the first
+  std::string output_dir;                  // empty: the case's Output/Directory
+  std::vector<std::string> overrides;      // "Path/To/Entry=value"
+  int levels = 3;                          // convergence: number of meshes
+  std::string parameters_format = "text";  // print-parameters: text, prm or json
+  bool this_rank_writes = true;            // false on every MPI rank but the first
 };
 
 // Thrown for a malformed command line; the message says what is wrong.

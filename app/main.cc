@@ -28,7 +28,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (cl.command == "print-parameters") {
-      CaseFile().print(out, cl.parameters_as_prm);
+      const auto format = cl.parameters_format == "prm"    ? CaseFile::ParameterFormat::prm
+                          : cl.parameters_format == "json" ? CaseFile::ParameterFormat::json
+                                                           : CaseFile::ParameterFormat::text;
+      CaseFile().print(out, format);
       return 0;
     }
     if (cl.command == "run") return run_command(cl, out);

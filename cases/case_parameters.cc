@@ -310,8 +310,18 @@ std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
   return backend_registry().find(name).create(problem, *prm_);
 }
 
-void CaseFile::print(std::ostream& out, bool as_prm) const {
-  prm_->print_parameters(out, as_prm ? ParameterHandler::PRM : ParameterHandler::Text);
+void CaseFile::print(std::ostream& out, ParameterFormat format) const {
+  switch (format) {
+    case ParameterFormat::text:
+      prm_->print_parameters(out, ParameterHandler::Text);
+      break;
+    case ParameterFormat::prm:
+      prm_->print_parameters(out, ParameterHandler::PRM);
+      break;
+    case ParameterFormat::json:
+      prm_->print_parameters(out, ParameterHandler::JSON);
+      break;
+  }
 }
 
 }  // namespace tightfit

@@ -87,8 +87,10 @@ class CaseFile {
   CaseParameters parameters() const;
   // Creates the backend called `name` from its subsection.
   std::unique_ptr<Backend> create_backend(const std::string& name, const Problem& problem) const;
-  // Every entry with its documentation and default: as a .prm file, or as readable text.
-  void print(std::ostream& out, bool as_prm) const;
+  // Every entry with its documentation and default: as readable text, as a .prm file to
+  // start a case from, or as JSON (with each entry's pattern: docs/parameters.md is made from it).
+  enum class ParameterFormat { text, prm, json };
+  void print(std::ostream& out, ParameterFormat format) const;
 
  private:
   std::unique_ptr<dealii::ParameterHandler> prm_;
