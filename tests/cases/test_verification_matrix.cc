@@ -1,0 +1,121 @@
+// The verification matrix (issue 4, item 4): every material law x end condition x backend on
+// the paper's garment T, coarse mesh, against the closed form of cylinder-theory.md at
+// alpha = 1.2, 1.5 and 1.8.
+//
+// Mesh: the case's own mesh (Mesh scale 1: 480 vertices, mean edge 17.3 mm), the coarse
+// mesh of the paper's Figure 14; the whole matrix runs in about 10 s on one core.
+//
+// Tolerances come from the convergence study of each combination (nu12 = 0.3):
+//   tightfit convergence cases/cylinder_T.prm --levels 2 --set "Garment/Mesh scale=2"
+//     --set "Protocol/Alpha increment=0.3" --set "Material/Law=LAW"
+//     --set "Protocol/End condition=ENDS" --set "Material/Poisson ratio weft-warp=0.3"
+// (linear Biot free ends also with --levels 3). Error of the level this test runs (scale 1)
+// at alpha 1.2 / 1.5 / 1.8, mass-spring | FEM, in %; every error is negative (the tube
+// reads low):
+//   linear Biot, free   -0.79 -0.54 -0.51 | -0.65 -0.35 -0.28   (3 levels to 8.8 mm: observed
+//                       order 2.0-2.5 | 1.97-1.99, Richardson -0.07..-0.26 | -0.016..-0.008)
+//   linear Biot, held   -0.72 -0.39 -0.30 | -0.62 -0.31 -0.24
+//   St V-K, free        -1.04 -1.06 -1.87 | -0.83 -0.59 -0.71
+//   St V-K, held        -0.95 -0.75 -0.79 | -0.78 -0.48 -0.41
+//   neo-Hookean, free   -0.72 -0.33 -0.24 | -0.58 -0.29 -0.22
+//   neo-Hookean, held   -0.57 -0.24 -0.17 | -0.49 -0.21 -0.15
+// From scale 2 to scale 1 every error falls about fourfold (linear triangles, error ~ h^2)
+// and the Richardson extrapolation of the two levels lies within 0.16% of the closed form,
+// except mass-spring St V-K free ends at alpha 1.8 (-0.66%). Each tolerance is the largest
+// measured error times about 1.3, rounded up to 0.1%: room for the mass-spring stop rule
+// (it stops once the residual is under its tolerance) without hiding a real change.
+//
+// Why mass-spring St V-K free ends needs 2.4%: the mass-spring backend holds the tube on the
+// body with penalty springs (stiffness 100 Y / h^2), so the tube sits inside the cylinder by
+// p / k: 0.11 mm at alpha 1.8 here (0.50 mm at Mesh scale 2), 0.13% of the radius, where the
+// FEM backend's contact leaves 1e-8 mm. A free St V-K tube is the stiffest in alpha:
+// d ln p / d ln alpha = 2 a^2/(a^2 - 1) + nu a^2/(1 - nu (a^2 - 1)) = 5.85 at alpha 1.8 (1.96
+// for linear Biot), so the 0.13% shortfall in hoop stretch reads about 0.75% less pressure,
+// on top of the discretisation error the FEM shows (-0.71%), and the contracted axial
+// stretch (b = 0.579 against 0.573) adds the rest. The penetration falls like h^2 with the
+// penalty stiffness, so the error converges (-3.7% at Mesh scale 2, -1.9% at scale 1).
+#include "cases/case_parameters.h"
+#include "cases/cylinder_run.h"
+#include "cases/cylinder_setup.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+namespace {
+
+struct MatrixCase {
+  const char* law;
+  const char* ends;
+  const char* backend;
+  double tolerance;  // largest |p_mean - p_theory| / p_theory allowed at any of the alphas
+};
+
+std::string case_name(const ::testing::TestParamInfo<MatrixCase>& info) {
+  std::string name = std::string(info.param.law) + "_" + info.param.ends + "_" + info.param.backend;
+  for (char& c : name)
+    if (c == ' ') c = '_';
+  return name;
+}
+
+class VerificationMatrix : public ::testing::TestWithParam<MatrixCase> {};
+
+TEST_P(VerificationMatrix, MeanPressureMatchesClosedForm) {
+  const MatrixCase& c = GetParam();
+  CaseFile file;
+  // Garment T as in cases/cylinder_T.prm, on its own mesh (level 1 of the study above).
+  for (const char* entry :
+       {"Garment/Name=T", "Garment/Panel width=0.157", "Garment/Panel height=0.24",
+        "Garment/Number of panels=2", "Garment/Edge length weft=0.008",
+        "Garment/Edge length warp=0.022", "Garment/Mesh scale=1",
+        // nu12 = 0.3 (nu21 = 0.16) makes free and held ends differ by up to 50% at alpha 1.8.
+        "Material/Poisson ratio weft-warp=0.3", "Output/Write VTU=false"})
+    file.set(entry);
+  file.set(std::string("Material/Law=") + c.law);
+  file.set(std::string("Protocol/End condition=") + c.ends);
+  CaseParameters parameters = file.parameters();
+  parameters.output.write_files = false;
+
+  // Start on a cylinder at alpha 1.2 and grow it to 1.5 and 1.8: the three alphas checked.
+  std::unique_ptr<CylinderSetup> setup = make_cylinder_setup(parameters);
+  const std::vector<double> alphas = {1.2, 1.5, 1.8};
+  setup->parameters.body.initial_radius_m = setup->radius_at(alphas.front());
+  setup->alphas = alphas;
+
+  std::ostringstream log;
+  const RunResult run = run_cylinder_case(
+      *setup, [&](const Problem& problem) { return file.create_backend(c.backend, problem); }, "",
+      log);
+  ASSERT_TRUE(run.completed) << run.failure << "\n" << log.str();
+  ASSERT_EQ(run.steps.size(), alphas.size());
+  for (const StepMeasurement& m : run.steps) {
+    std::printf("%s, %s ends, %s: alpha %.1f  p %.2f Pa  closed form %.2f Pa  error %+.3f%%\n",
+                c.law, c.ends, c.backend, m.alpha, m.p_mean_Pa(), m.p_theory_Pa, 100 * m.rel_error);
+    EXPECT_EQ(m.summary.contact_fraction, 1.0) << "alpha " << m.alpha;
+    EXPECT_LT(std::abs(m.rel_error), c.tolerance) << "alpha " << m.alpha;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllLawsEndsBackends, VerificationMatrix,
+    ::testing::Values(MatrixCase{"linear biot", "free", "massspring", 0.010},
+                      MatrixCase{"linear biot", "free", "fem", 0.009},
+                      MatrixCase{"linear biot", "held", "massspring", 0.010},
+                      MatrixCase{"linear biot", "held", "fem", 0.008},
+                      MatrixCase{"st venant kirchhoff", "free", "massspring", 0.024},
+                      MatrixCase{"st venant kirchhoff", "free", "fem", 0.011},
+                      MatrixCase{"st venant kirchhoff", "held", "massspring", 0.013},
+                      MatrixCase{"st venant kirchhoff", "held", "fem", 0.010},
+                      MatrixCase{"neo hookean", "free", "massspring", 0.010},
+                      MatrixCase{"neo hookean", "free", "fem", 0.008},
+                      MatrixCase{"neo hookean", "held", "massspring", 0.008},
+                      MatrixCase{"neo hookean", "held", "fem", 0.007}),
+    case_name);
+
+}  // namespace
+}  // namespace tightfit
