@@ -9,6 +9,9 @@
 #     cylinder_T_compare/               tightfit compare cases/cylinder_T.prm
 #     cylinder_T_gravity/               the same case with gravity (optional)
 #     cylinder_T_convergence/           tightfit convergence cases/cylinder_T.prm
+#     coarse_fine.csv                   both backends on two meshes (optional; written by
+#                                       validation-report.sh in convergence.csv's columns)
+#   Figure 6 also reads cylinder_T/garment_NNNN.vtu (python3 and gnuplot, no VTK).
 #   FIGURES_DIR  where the PNGs go (default docs/figures)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -50,6 +53,29 @@ gravity=$results/cylinder_T_gravity
 convergence=$results/cylinder_T_convergence/convergence.csv
 
 echo "Figures from $results into $figures:"
+# Figure 6: the garment coloured by pressure at four load steps (settled, about 1.2, 1.5 and
+# the last), on one colour scale topped just above the last step's largest pressure.
+if has_rows "$T/pressure.csv" && ls "$T"/garment_0000.vtu >/dev/null 2>&1; then
+  n_steps=$(($(wc -l <"$T/pressure.csv") - 1))
+  picks="0 $((n_steps / 4)) $((n_steps * 5 / 8)) $((n_steps - 1))"
+  pmax=$(awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next} {m = $c["p_max_Pa"]}
+    END {print 100 * int(1.05 * m / 100 + 1)}' "$T/pressure.csv")
+  files="" labels="" means=""
+  for step in $picks; do
+    dat=$(mktemp --suffix=.dat)
+    python3 $plots/vtu_triangles.py "$(printf '%s/garment_%04d.vtu' "$T" "$step")" "$dat" "$pmax"
+    files="$files $dat"
+    labels="$labels $(awk -F, -v s=$((step + 2)) 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i}
+      NR == s {printf "%.2f", $c["alpha"]}' "$T/pressure.csv")"
+    means="$means $(awk -F, -v s=$((step + 2)) 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i}
+      NR == s {printf "%.0f", $c["p_mean_Pa"]}' "$T/pressure.csv")"
+  done
+  plot fig06_pressure_map pressure_map.gp \
+    "files='$files'; labels='$labels'; means='$means'; pmax=$pmax; name='T'" "$T/pressure.csv"
+  rm -f $files
+else
+  echo "  fig06_pressure_map: skipped (no garment VTU in $T)"
+fi
 plot fig07_pressure_radius pressure_radius.gp \
   "csv='$T/pressure.csv'; name='T'" "$T/pressure.csv"
 plot fig08_garment_sizes garment_sizes.gp \
@@ -76,8 +102,14 @@ if has_rows "$convergence"; then
   backends=$(backends_in "$convergence")
   plot convergence_error convergence_error.gp \
     "csv='$convergence'; backends='$backends'" "$convergence"
-  plot fig14_coarse_fine coarse_fine.gp \
-    "csv='$convergence'; backends='$backends'; name='T'" "$convergence"
+  if ! has_rows "$results/coarse_fine.csv"; then
+    plot fig14_coarse_fine coarse_fine.gp \
+      "csv='$convergence'; backends='$backends'; name='T'" "$convergence"
+  fi
 else
-  echo "  convergence_error, fig14_coarse_fine: skipped ($convergence is missing)"
+  echo "  convergence_error: skipped ($convergence is missing)"
+fi
+if has_rows "$results/coarse_fine.csv"; then
+  plot fig14_coarse_fine coarse_fine.gp \
+    "csv='$results/coarse_fine.csv'; backends='massspring fem'; name='T'" "$results/coarse_fine.csv"
 fi
