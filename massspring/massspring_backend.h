@@ -4,6 +4,13 @@
 // start (velocity ignored). Time integration is only the road to the static equilibrium:
 // a load step ends when the largest residual force is below a tolerance relative to the
 // garment's tension scale.
+//
+// Placement (MassSpringParameters): "sewn tube" starts every load step from the positions
+// given by set_positions. "flat panels" starts the first load step from the paper's flat
+// panels instead (FlatPanelStart, Section 4.3): the positions set before it are ignored; once
+// the seams have closed they are welded and that step continues on the sewn garment as usual.
+// Positions set after the first step are used as with the sewn tube. That step's report counts
+// the flat-panel frames in its iterations and its wall time, and names them in its detail.
 #pragma once
 
 #include "core/backend.h"
@@ -11,15 +18,21 @@
 #include "massspring/massspring_parameters.h"
 #include "massspring/triangle_elements.h"
 
+#include <memory>
 #include <vector>
 
 namespace tightfit {
+
+class FlatPanelStart;
 
 class MassSpringBackend final : public Backend {
  public:
   // `problem` (and everything it points to) must outlive the backend. Throws
   // std::invalid_argument when the problem is incomplete or a parameter is out of range.
+  // With Placement = flat panels, also throws std::invalid_argument when the body is not a
+  // Cylinder or the garment has fewer than two panels.
   MassSpringBackend(const Problem& problem, const MassSpringParameters& parameters);
+  ~MassSpringBackend() override;
 
   std::string name() const override { return "massspring"; }
   void set_positions(const std::vector<Vec3>& positions_m) override;
@@ -62,6 +75,9 @@ class MassSpringBackend final : public Backend {
   double size_m_ = 0.0;  // the garment's rest size, sqrt(rest area)
   double time_step_s_ = 0.0;
   double damping_per_s_ = 0.0;
+
+  // The paper's flat-panel start, waiting for the first load step (flat panels only).
+  std::unique_ptr<FlatPanelStart> flat_start_;
 
   std::vector<Vec3> x_, v_;
   // RK4 work space, allocated once.

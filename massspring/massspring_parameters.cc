@@ -19,6 +19,7 @@ std::string text(T value) {
 void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
+  using dealii::Patterns::Selection;
   const MassSpringParameters d;
   prm.enter_subsection("Mass spring");
   prm.declare_entry("Time step", text(d.time_step_s), Double(0.0, 1.0),
@@ -47,6 +48,24 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
                     "Angular springs on interior edges, hinge stiffness 3 B |e|^2 / (A1 + A2) "
                     "(Grinspun et al. 2003). 0 = no bending springs.");
+  prm.declare_entry("Placement", "sewn tube", Selection("sewn tube|flat panels"),
+                    "How the first load step starts. 'sewn tube': from the case's start, the "
+                    "garment already sewn round the body (fast). 'flat panels': the paper's "
+                    "start (Section 4.3, Figure 5): the panels unsewn and laid flat on opposite "
+                    "sides of the cylinder, Placement gap from its surface, pulled together by "
+                    "zero-rest-length seam springs (membrane, bending and contact acting) until "
+                    "every seam vertex pair is within 5% of the mean edge length; then the "
+                    "seams are welded and the step continues on the sewn garment. Needs a "
+                    "cylinder body; the case's start positions are not used.");
+  prm.declare_entry("Placement gap", text(d.placement_gap_m), Double(0.0, 1.0),
+                    "Flat panels: distance from the cylinder's surface to each flat panel, m "
+                    "(the paper: small and equal on both sides).");
+  prm.declare_entry("Seam spring stiffness factor", text(d.seam_stiffness_factor),
+                    Double(1e-6, 1e6),
+                    "Flat panels: stiffness of each seam spring as a multiple of the law's "
+                    "stiffness scale (N/m), dimensionless. A seam pair balances the hoop pull "
+                    "at a gap of (strain x seam length per vertex) / factor: it must be small "
+                    "against 5% of an edge for the seams to close.");
   prm.leave_subsection();
 }
 
@@ -59,6 +78,9 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   relative_tolerance = prm.get_double("Relative tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
   bending_rigidity_N_m = prm.get_double("Bending rigidity");
+  placement = prm.get("Placement") == "flat panels" ? Placement::flat_panels : Placement::sewn_tube;
+  placement_gap_m = prm.get_double("Placement gap");
+  seam_stiffness_factor = prm.get_double("Seam spring stiffness factor");
   prm.leave_subsection();
   validate();
 }

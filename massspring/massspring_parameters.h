@@ -10,6 +10,16 @@ class ParameterHandler;
 
 namespace tightfit {
 
+// How the first load step starts (the paper's Section 4.3).
+enum class Placement {
+  // From the positions given to set_positions: for a tube, the garment already sewn round
+  // the body (contact/tube_placement.h). Fast: no seam has to close.
+  sewn_tube,
+  // The paper's start (Section 4.3, Figure 5): the panels unsewn, laid flat on opposite sides
+  // of a cylinder body, pulled together by seam springs until the seams close; then welded.
+  flat_panels,
+};
+
 struct MassSpringParameters {
   // RK4 time step, s; 0 chooses it from the stiffest vertex (membrane, bending and penalty
   // contact) at the start of every load step.
@@ -30,6 +40,15 @@ struct MassSpringParameters {
   int maximum_frames = 200000;
   // Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m).
   double bending_rigidity_N_m = 1e-6;
+  // Start of the first load step.
+  Placement placement = Placement::sewn_tube;
+  // Flat panels: distance from the cylinder's surface to each panel's plane, m.
+  double placement_gap_m = 0.005;
+  // Flat panels: each zero-rest-length seam spring's stiffness is this times the law's
+  // stiffness scale (N/m), dimensionless. A seam vertex pair balances the hoop pull T h (T the
+  // tension, h the vertex's length of seam) at a gap T h / k, so the default keeps that gap a
+  // few percent of an edge up to 50% strain.
+  double seam_stiffness_factor = 20.0;
 
   // Throws std::invalid_argument naming the entry when a value is out of range.
   void validate() const;

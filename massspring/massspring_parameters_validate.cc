@@ -19,6 +19,8 @@ void MassSpringParameters::validate() const {
           "must be in (0, 1)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
   require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");
+  require(placement_gap_m >= 0, "Placement gap", "must be >= 0 (m)");
+  require(seam_stiffness_factor > 0, "Seam spring stiffness factor", "must be positive");
 }
 
 }  // namespace tightfit

@@ -21,6 +21,26 @@ TEST(MassSpringParameters, DefaultsParseToTheStructsDefaults) {
   EXPECT_EQ(parsed.maximum_frames, defaults.maximum_frames);
   EXPECT_EQ(parsed.bending_rigidity_N_m, defaults.bending_rigidity_N_m);
   EXPECT_EQ(parsed.damping_per_s, defaults.damping_per_s);
+  EXPECT_EQ(parsed.placement, Placement::sewn_tube);
+  EXPECT_EQ(parsed.placement_gap_m, defaults.placement_gap_m);
+  EXPECT_EQ(parsed.seam_stiffness_factor, defaults.seam_stiffness_factor);
+}
+
+TEST(MassSpringParameters, ReadsTheFlatPanelPlacement) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Placement = flat panels\n  set Placement gap = 0.01\n"
+      "  set Seam spring stiffness factor = 40\nend\n");
+  MassSpringParameters p;
+  p.parse_parameters(prm);
+  EXPECT_EQ(p.placement, Placement::flat_panels);
+  EXPECT_DOUBLE_EQ(p.placement_gap_m, 0.01);
+  EXPECT_DOUBLE_EQ(p.seam_stiffness_factor, 40.0);
+  EXPECT_ANY_THROW(
+      prm.parse_input_from_string("subsection Mass spring\n  set Placement = draped\nend\n"));
+  p.seam_stiffness_factor = 0.0;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
 }
 
 TEST(MassSpringParameters, ReadsAFileAndRejectsValuesOutOfRange) {
