@@ -7,6 +7,7 @@
 #include "core/mesh_geometry.h"
 #include "fem/membrane_kernel.h"
 #include "fem/nodal_contact.h"
+#include "fem/petsc_linear_solver.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
@@ -23,11 +24,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/petsc_precondition.h>
-#include <deal.II/lac/petsc_solver.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/vector.h>
 
 #include <petscsys.h>
@@ -166,20 +164,26 @@ class FemBackend::Implementation {
 
  private:
   void build_mesh();
+  // Shape-function gradients in grain axes and JxW at every quadrature point of every cell:
+  // they live on the reference (pattern) configuration, so they are computed once.
+  void build_cell_quadrature();
   void build_constraints_and_matrix();
   Vec3 vertex_position(const dealii::Vector<double>& x, int unwelded) const;
   // Node-major energy gradient (and Hessian) of one cell, from the DoF values x.
-  template <class CellIterator>
-  void cell_kernel(const CellIterator& cell, dealii::FEValues<2>& fe_values,
-                   const dealii::Vector<double>& x, Eigen::VectorXd& gradient,
+  void cell_kernel(unsigned int cell, const dealii::Vector<double>& x, Eigen::VectorXd& gradient,
                    Eigen::MatrixXd* hessian) const;
   // rhs = -R(x) with R = dPi/dx - f_contact, constrained; the tangent dR/dx when asked.
   void assemble(const dealii::Vector<double>& x, bool with_tangent);
   // Solves tangent * increment = rhs; returns the Krylov iterations (0 for direct).
-  int solve_linear_system(const LoadStep& step);
+  int solve_linear_system(const LoadStep& step, std::string& notes);
   dealii::Vector<double> gather_increment() const;
-  int newton(const LoadStep& step, std::vector<int>& krylov_iterations);
+  int newton(const LoadStep& step, std::vector<int>& krylov_iterations, std::string& notes);
+  // Secant extrapolation in alpha of the positions and multipliers of the last two converged
+  // steps in contact (a continuation predictor: it changes the start, not the equilibrium).
+  void secant_predictor(const LoadStep& step);
   void contact_predictor();
+  // Solves (K + mu I) dx = -R with the tangent at x_ re-assembled; mu in N/m.
+  int solve_shifted(const LoadStep& step, double shift_N_per_m, std::string& notes);
   void update_state();
   [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N) const;
 
@@ -200,10 +204,19 @@ class FemBackend::Implementation {
   std::vector<DofTriple> vertex_dofs_;   // unwelded vertex -> its three DoFs
   std::vector<int> master_;              // welded vertex -> the unwelded copy that carries it
   std::vector<Mat2> to_grain_gradient_;  // per active cell: grad_grain = G grad_layout
+  // Per active cell (by active_cell_index): its DoFs, and per quadrature point its JxW (m^2)
+  // and each node's shape gradient in grain axes (1/m), node-major.
+  std::vector<std::vector<global_dof_index>> cell_dofs_;
+  std::vector<std::vector<double>> cell_JxW_m2_;
+  std::vector<std::vector<Vec2>> cell_grad_grain_;
+  std::vector<char> cell_owned_;
+  // DoF -> row 3 w + c of the welded vertex w it carries (component c); -1 off vertices.
+  std::vector<int> dof_vertex_row_;
 
   dealii::AffineConstraints<double> constraints_;
   dealii::PETScWrappers::MPI::SparseMatrix tangent_;
   dealii::PETScWrappers::MPI::Vector rhs_, increment_;
+  std::unique_ptr<PetscLinearSolver> linear_solver_;
   dealii::Vector<double> x_;  // every DoF on every rank: the current positions, m
 
   std::vector<double> penalty_N_per_m_;  // k A0 per welded vertex
@@ -212,6 +225,14 @@ class FemBackend::Implementation {
   double force_scale_N_ = 0.0;
   double normal_step_m_ = 0.0;
   bool had_contact_ = false;
+  // The last two converged steps (alpha, DoF positions, multipliers), for secant_predictor.
+  int n_history_ = 0;
+  std::array<double, 2> history_alpha_{};
+  std::array<dealii::Vector<double>, 2> history_x_;
+  std::array<std::vector<double>, 2> history_multiplier_N_;
+  // Levenberg-Marquardt shift of the tangent, N/m: zero unless the line search failed.
+  double shift_N_per_m_ = 0.0;
+  int n_shifted_solves_ = 0;  // in the current step
 };
 
 FemBackend::Implementation::Implementation(const Problem& problem, const FemParameters& parameters)
@@ -242,6 +263,13 @@ FemBackend::Implementation::Implementation(const Problem& problem, const FemPara
   master_.assign(mesh.n_vertices, -1);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
     if (master_[mesh.welded_index[u]] < 0) master_[mesh.welded_index[u]] = u;
+  dof_vertex_row_.assign(dof_handler_.n_dofs(), -1);
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
+    for (int c = 0; c < 3; ++c) dof_vertex_row_[vertex_dofs_[u][c]] = 3 * mesh.welded_index[u] + c;
+  build_cell_quadrature();
+  linear_solver_ =
+      std::make_unique<PetscLinearSolver>(parameters.linear_solver, parameters.linear_tolerance,
+                                          parameters.max_linear_iterations, comm_);
 
   // Penalty k = beta Y / h^2 (Pa/m) times the barycentric rest area of each vertex.
   double edge_sum = 0.0;
@@ -307,10 +335,39 @@ void FemBackend::Implementation::build_mesh() {
   }
 }
 
+void FemBackend::Implementation::build_cell_quadrature() {
+  dealii::FEValues<2> fe_values(mapping_, fe_, quadrature_,
+                                dealii::update_gradients | dealii::update_JxW_values);
+  const unsigned int n_cells = triangulation_.n_active_cells();
+  const unsigned int n_local = fe_.n_dofs_per_cell();
+  const unsigned int n_nodes = n_local / 3;
+  cell_dofs_.assign(n_cells, std::vector<global_dof_index>(n_local));
+  cell_JxW_m2_.assign(n_cells, {});
+  cell_grad_grain_.assign(n_cells, {});
+  cell_owned_.assign(n_cells, 0);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    const unsigned int c = cell->active_cell_index();
+    fe_values.reinit(cell);
+    cell->get_dof_indices(cell_dofs_[c]);
+    cell_owned_[c] = cell->is_locally_owned();
+    const Mat2& G = to_grain_gradient_[c];
+    cell_grad_grain_[c].resize(quadrature_.size() * n_nodes);
+    for (unsigned int q = 0; q < quadrature_.size(); ++q) {
+      cell_JxW_m2_[c].push_back(fe_values.JxW(q));
+      for (unsigned int i = 0; i < n_local; ++i) {
+        if (local_component_[i] != 0) continue;
+        const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
+        cell_grad_grain_[c][q * n_nodes + local_node_[i]] = G * Vec2(g[0], g[1]);
+      }
+    }
+  }
+}
+
 void FemBackend::Implementation::set_positions(const std::vector<Vec3>& positions_m) {
   if (static_cast<int>(positions_m.size()) != problem_.mesh->n_vertices)
     throw std::invalid_argument("fem backend: set_positions needs one position per vertex");
   x_ = dof_positions(positions_m);
+  n_history_ = 0;
   build_constraints_and_matrix();
 }
 
@@ -388,36 +445,28 @@ void FemBackend::Implementation::build_constraints_and_matrix() {
     constraints_.add_entries_local_to_global(dofs, pattern, false);
   }
   tangent_.reinit(owned_dofs_, owned_dofs_, pattern, comm_);
+  // A new matrix: its pattern may differ, so the next solve analyses it afresh.
+  if (linear_solver_) linear_solver_->reset();
   rhs_.reinit(owned_dofs_, comm_);
   increment_.reinit(owned_dofs_, comm_);
 }
 
-template <class CellIterator>
-void FemBackend::Implementation::cell_kernel(const CellIterator& cell,
-                                             dealii::FEValues<2>& fe_values,
-                                             const dealii::Vector<double>& x,
+void FemBackend::Implementation::cell_kernel(unsigned int cell, const dealii::Vector<double>& x,
                                              Eigen::VectorXd& gradient,
                                              Eigen::MatrixXd* hessian) const {
-  fe_values.reinit(cell);
   const unsigned int n_local = fe_.n_dofs_per_cell();
-  const int n_nodes = static_cast<int>(n_local / 3);
-  std::vector<global_dof_index> dofs(n_local);
-  cell->get_dof_indices(dofs);
+  const unsigned int n_nodes = n_local / 3;
+  const std::vector<global_dof_index>& dofs = cell_dofs_[cell];
   gradient.setZero(n_local);
   if (hessian) hessian->setZero(n_local, n_local);
-  const Mat2& G = to_grain_gradient_[cell->active_cell_index()];
   std::vector<Vec2> grad_grain(n_nodes);
-  for (unsigned int q = 0; q < quadrature_.size(); ++q) {
-    Mat32 F = Mat32::Zero();
-    for (unsigned int i = 0; i < n_local; ++i) {
-      if (local_component_[i] != 0) continue;
-      const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
-      grad_grain[local_node_[i]] = G * Vec2(g[0], g[1]);
-    }
+  for (unsigned int q = 0; q < cell_JxW_m2_[cell].size(); ++q) {
+    std::copy_n(cell_grad_grain_[cell].begin() + q * n_nodes, n_nodes, grad_grain.begin());
     // F = dx/dX_grain = sum_a x_a grad_N_a^T (architecture.md: the membrane's 3x2 gradient).
+    Mat32 F = Mat32::Zero();
     for (unsigned int i = 0; i < n_local; ++i)
       F.row(local_component_[i]) += x[dofs[i]] * grad_grain[local_node_[i]].transpose();
-    add_membrane_point(*problem_.law, grad_grain, F, fe_values.JxW(q), gradient, hessian);
+    add_membrane_point(*problem_.law, grad_grain, F, cell_JxW_m2_[cell][q], gradient, hessian);
   }
 }
 
@@ -425,17 +474,13 @@ void FemBackend::Implementation::assemble(const dealii::Vector<double>& x, bool 
   const unsigned int n_local = fe_.n_dofs_per_cell();
   if (with_tangent) tangent_ = 0;
   rhs_ = 0;
-  dealii::FEValues<2> fe_values(mapping_, fe_, quadrature_,
-                                dealii::update_gradients | dealii::update_JxW_values);
-  std::vector<global_dof_index> dofs(n_local);
   dealii::FullMatrix<double> cell_matrix(n_local, n_local);
   dealii::Vector<double> cell_rhs(n_local);
   Eigen::VectorXd gradient;
   Eigen::MatrixXd hessian;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    if (!cell->is_locally_owned()) continue;
-    cell_kernel(cell, fe_values, x, gradient, with_tangent ? &hessian : nullptr);
-    cell->get_dof_indices(dofs);
+  for (unsigned int cell = 0; cell < cell_dofs_.size(); ++cell) {
+    if (!cell_owned_[cell]) continue;
+    cell_kernel(cell, x, gradient, with_tangent ? &hessian : nullptr);
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = 3 * local_node_[i] + local_component_[i];
       cell_rhs[i] = -gradient[a];
@@ -444,9 +489,10 @@ void FemBackend::Implementation::assemble(const dealii::Vector<double>& x, bool 
           cell_matrix(i, j) = hessian(a, 3 * local_node_[j] + local_component_[j]);
     }
     if (with_tangent)
-      constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, tangent_, rhs_);
+      constraints_.distribute_local_to_global(cell_matrix, cell_rhs, cell_dofs_[cell], tangent_,
+                                              rhs_);
     else
-      constraints_.distribute_local_to_global(cell_rhs, dofs, rhs_);
+      constraints_.distribute_local_to_global(cell_rhs, cell_dofs_[cell], rhs_);
   }
 
   // Contact at the vertices, each on the rank that owns its DoFs.
@@ -477,40 +523,18 @@ void FemBackend::Implementation::assemble(const dealii::Vector<double>& x, bool 
   rhs_.compress(dealii::VectorOperation::add);
 }
 
-int FemBackend::Implementation::solve_linear_system(const LoadStep& step) {
-  using namespace dealii;
-  SolverControl control(parameters_.max_linear_iterations,
-                        parameters_.linear_tolerance * rhs_.l2_norm(), false, false);
-  increment_ = 0;
+int FemBackend::Implementation::solve_linear_system(const LoadStep& step, std::string& notes) {
   try {
-    switch (parameters_.linear_solver) {
-      case LinearSolverKind::direct: {
-        PETScWrappers::SparseDirectMUMPS solver(control, comm_);
-        solver.solve(tangent_, increment_, rhs_);
-        return 0;
-      }
-      case LinearSolverKind::cg_amg: {
-        PETScWrappers::PreconditionBoomerAMG amg(
-            tangent_, PETScWrappers::PreconditionBoomerAMG::AdditionalData(true));
-        PETScWrappers::SolverCG solver(control, comm_);
-        solver.solve(tangent_, increment_, rhs_, amg);
-        return static_cast<int>(control.last_step());
-      }
-      case LinearSolverKind::gmres_amg: {
-        PETScWrappers::PreconditionBoomerAMG amg(
-            tangent_, PETScWrappers::PreconditionBoomerAMG::AdditionalData(false));
-        PETScWrappers::SolverGMRES solver(control, comm_);
-        solver.solve(tangent_, increment_, rhs_, amg);
-        return static_cast<int>(control.last_step());
-      }
-    }
+    const LinearSolveResult result =
+        linear_solver_->solve(tangent_.petsc_matrix(), rhs_, increment_);
+    notes += result.note;
+    return result.used == LinearSolverKind::direct ? 0 : result.iterations;
   } catch (const std::exception& e) {
     fail(step,
          std::string("linear solver '") + to_string(parameters_.linear_solver) +
              "' failed: " + e.what(),
          rhs_.linfty_norm());
   }
-  return 0;
 }
 
 dealii::Vector<double> FemBackend::Implementation::gather_increment() const {
@@ -532,11 +556,14 @@ void FemBackend::Implementation::fail(const LoadStep& step, const std::string& w
 }
 
 // Newton's method on R(x) = 0 with the consistent tangent and a backtracking line search on
-// the residual norm; returns the iterations taken.
-int FemBackend::Implementation::newton(const LoadStep& step, std::vector<int>& krylov_iterations) {
+// the residual norm; returns the iterations taken. The trial point of a full step is assembled
+// with its tangent: when the step is accepted (the usual case near the solution) that assembly
+// is the next iteration's, so a Newton iteration costs one assembly and one solve.
+int FemBackend::Implementation::newton(const LoadStep& step, std::vector<int>& krylov_iterations,
+                                       std::string& notes) {
   const double tolerance_N = parameters_.residual_tolerance * force_scale_N_;
+  assemble(x_, true);
   for (int iteration = 0;; ++iteration) {
-    assemble(x_, true);
     const double residual_N = rhs_.linfty_norm();
     history_N_.push_back(residual_N);
     if (!std::isfinite(residual_N)) fail(step, "the residual is not finite", residual_N);
@@ -544,30 +571,79 @@ int FemBackend::Implementation::newton(const LoadStep& step, std::vector<int>& k
     if (iteration >= parameters_.max_newton_iterations)
       fail(step, "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
            residual_N);
-    krylov_iterations.push_back(solve_linear_system(step));
-    const dealii::Vector<double> increment = gather_increment();
     const double norm_0 = rhs_.l2_norm();
-    // A step longer than half an edge leaves the region where the linearisation holds (and
-    // may carry the garment, which has no bending stiffness, into a folded state): shorten it.
-    double s = std::min(1.0, 0.5 * mean_edge_m_ / increment.linfty_norm());
+    // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
+    // or indefinite tangent, along which Newton's step may be huge or useless. When the line
+    // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
+    // until the line search succeeds and shrinking tenfold after each success. The residual is
+    // untouched, so the converged state is not biased.
+    const double stiffness_scale_N_per_m = problem_.law->stiffness_scale();
     dealii::Vector<double> trial(x_);
-    for (int halving = 0;; ++halving) {
-      trial = x_;
-      trial.add(s, increment);
-      if (!parameters_.line_search) break;
-      assemble(trial, false);
-      const double norm = rhs_.l2_norm();
-      if ((std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0) ||
-          halving >= parameters_.max_line_search_halvings)
+    bool tangent_current = false;
+    for (int escalation = 0;; ++escalation) {
+      krylov_iterations.push_back(shift_N_per_m_ > 0.0 ? solve_shifted(step, shift_N_per_m_, notes)
+                                                       : solve_linear_system(step, notes));
+      const dealii::Vector<double> increment = gather_increment();
+      // A step longer than half an edge leaves the region where the linearisation holds (and
+      // may carry the garment, which has no bending stiffness, into a folded state): shorten
+      // it.
+      double s = std::min(1.0, 0.5 * mean_edge_m_ / increment.linfty_norm());
+      bool accepted = !parameters_.line_search;
+      for (int halving = 0; parameters_.line_search; ++halving) {
+        trial = x_;
+        trial.add(s, increment);
+        // Armijo's sufficient decrease (1e-4 s) of ||R||_2.
+        tangent_current = halving == 0;
+        assemble(trial, tangent_current);
+        const double norm = rhs_.l2_norm();
+        accepted = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
+        if (accepted || halving >= parameters_.max_line_search_halvings) break;
+        s *= 0.5;
+      }
+      if (!parameters_.line_search) {
+        trial = x_;
+        trial.add(s, increment);
+        tangent_current = false;
+      }
+      if (accepted) {
+        shift_N_per_m_ = shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m ? 0.1 * shift_N_per_m_ : 0;
         break;
-      s *= 0.5;
+      }
+      if (escalation >= 8) break;  // take the shortest step tried; the iteration limit judges
+      shift_N_per_m_ =
+          shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m;
+      ++n_shifted_solves_;
     }
     x_ = trial;
+    if (!tangent_current) assemble(x_, true);
   }
 }
 
-// Vertices the body has grown into start from their closest point on its surface: the
-// predictor of a growing body, keeping held vertices on their planes.
+void FemBackend::Implementation::secant_predictor(const LoadStep& step) {
+  if (n_history_ < 2) return;
+  const double ratio = (step.alpha - history_alpha_[0]) / (history_alpha_[0] - history_alpha_[1]);
+  // Only forward steps no longer than a few of the last: further out the secant misleads.
+  if (!std::isfinite(ratio) || ratio <= 0.0 || ratio > 4.0) return;
+  x_ = history_x_[0];
+  x_.add(ratio, history_x_[0], -ratio, history_x_[1]);
+  for (std::size_t w = 0; w < multiplier_N_.size(); ++w)
+    multiplier_N_[w] =
+        std::max(0.0, history_multiplier_N_[0][w] +
+                          ratio * (history_multiplier_N_[0][w] - history_multiplier_N_[1][w]));
+  // No constraints_.distribute(x_): the pins and held ends constrain increments, and the
+  // secant of two states that satisfy them (and the seams) satisfies them already.
+}
+
+int FemBackend::Implementation::solve_shifted(const LoadStep& step, double shift_N_per_m,
+                                              std::string& notes) {
+  assemble(x_, true);
+  // Same pattern (the diagonal is in it): the factorization's analysis is kept.
+  MatShift(tangent_.petsc_matrix(), shift_N_per_m);
+  return solve_linear_system(step, notes);
+}
+
+// Vertices the body has grown into, and those predicted in contact, start from their closest
+// point on its surface: the predictor of a growing body, keeping held vertices on their planes.
 void FemBackend::Implementation::contact_predictor() {
   const SimulationMesh& mesh = *problem_.mesh;
   std::vector<char> held(mesh.n_vertices, 0);
@@ -579,7 +655,9 @@ void FemBackend::Implementation::contact_predictor() {
   for (int w = 0; w < mesh.n_vertices; ++w) {
     const Vec3 x = vertex_position(x_, master_[w]);
     const SurfacePoint s = problem_.body->query(x);
-    if (s.signed_distance_m >= 0.0) continue;
+    // Vertices in contact at the last step (the multiplier predicted positive) go onto the
+    // surface too: a penetration or gap left by the secant would cost kA g of residual.
+    if (s.signed_distance_m >= 0.0 && multiplier_N_[w] <= 0.0) continue;
     Vec3 target = s.closest_point_m;
     if (held[w]) target -= (target - x).dot(d) * d;
     moved[w] = target;
@@ -597,15 +675,19 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   StepReport report;
   report.tolerance_N = parameters_.residual_tolerance * force_scale_N_;
   history_N_.clear();
+  secant_predictor(step);
   contact_predictor();
+  shift_N_per_m_ = 0.0;
+  n_shifted_solves_ = 0;
 
   std::vector<int> krylov_iterations;
+  std::string solver_notes;
   std::vector<std::string> rounds;
   bool gap_closed = false;
   int n_active = 0;
   for (int round = 0; round < parameters_.max_augmented_lagrangian_iterations; ++round) {
     const std::size_t first = history_N_.size();
-    report.iterations += newton(step, krylov_iterations);
+    report.iterations += newton(step, krylov_iterations, solver_notes);
     rounds.push_back(
         format_list(std::vector<double>(history_N_.begin() + first, history_N_.end())));
     // Uzawa's update: the multiplier becomes the contact force just found (nodal_contact.h).
@@ -635,6 +717,17 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
          report.residual_N);
   if (had_contact_ && n_active == 0) fail(step, "contact lost", report.residual_N);
   had_contact_ = had_contact_ || n_active > 0;
+  if (n_active == 0) {
+    n_history_ = 0;
+  } else {
+    history_alpha_[1] = history_alpha_[0];
+    history_x_[1].swap(history_x_[0]);
+    history_multiplier_N_[1].swap(history_multiplier_N_[0]);
+    history_alpha_[0] = step.alpha;
+    history_x_[0] = x_;
+    history_multiplier_N_[0] = multiplier_N_;
+    n_history_ = std::min(n_history_ + 1, 2);
+  }
   update_state();
 
   report.converged = true;
@@ -642,8 +735,10 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   detail << "newton " << report.iterations << " in " << rounds.size() << " AL rounds, |R|_max N: ";
   for (std::size_t r = 0; r < rounds.size(); ++r)
     detail << (r ? " | " : "") << "[" << rounds[r] << "]";
-  detail << "; krylov (" << to_string(parameters_.linear_solver) << "):";
+  detail << "; krylov (" << to_string(linear_solver_->kind()) << "):";
   for (int k : krylov_iterations) detail << " " << k;
+  if (!solver_notes.empty()) detail << " [" << solver_notes << "]";
+  if (n_shifted_solves_ > 0) detail << "; " << n_shifted_solves_ << " shifted tangents";
   detail << "; max gap " << max_penetration_m_ << " m; " << n_active << " in contact";
   report.detail = detail.str();
   report.wall_seconds =
@@ -653,17 +748,13 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
 
 std::vector<Vec3> FemBackend::Implementation::internal_force_N(
     const dealii::Vector<double>& x) const {
-  dealii::FEValues<2> fe_values(mapping_, fe_, quadrature_,
-                                dealii::update_gradients | dealii::update_JxW_values);
   dealii::Vector<double> gradient_full(dof_handler_.n_dofs());
-  std::vector<global_dof_index> dofs(fe_.n_dofs_per_cell());
   Eigen::VectorXd gradient;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    if (!cell->is_locally_owned()) continue;
-    cell_kernel(cell, fe_values, x, gradient, nullptr);
-    cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      gradient_full[dofs[i]] += gradient[3 * local_node_[i] + local_component_[i]];
+  for (unsigned int cell = 0; cell < cell_dofs_.size(); ++cell) {
+    if (!cell_owned_[cell]) continue;
+    cell_kernel(cell, x, gradient, nullptr);
+    for (unsigned int i = 0; i < cell_dofs_[cell].size(); ++i)
+      gradient_full[cell_dofs_[cell][i]] += gradient[3 * local_node_[i] + local_component_[i]];
   }
   MPI_Allreduce(MPI_IN_PLACE, gradient_full.begin(), static_cast<int>(gradient_full.size()),
                 MPI_DOUBLE, MPI_SUM, comm_);
@@ -704,17 +795,14 @@ void FemBackend::Implementation::linearise(const std::vector<Vec3>& positions_m,
   const dealii::Vector<double> x = dof_positions(positions_m);
   residual_N.setZero(3 * n);
   tangent_N_per_m.setZero(3 * n, 3 * n);
-  dealii::FEValues<2> fe_values(mapping_, fe_, quadrature_,
-                                dealii::update_gradients | dealii::update_JxW_values);
   Eigen::VectorXd gradient;
   Eigen::MatrixXd hessian;
   const unsigned int n_local = fe_.n_dofs_per_cell();
   std::vector<int> row(n_local);
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    cell_kernel(cell, fe_values, x, gradient, &hessian);
-    // Local node a is the cell's vertex a (linear elements): its welded vertex's row.
-    for (unsigned int i = 0; i < n_local; ++i)
-      row[i] = 3 * mesh.welded_index[cell->vertex_index(local_node_[i])] + local_component_[i];
+  for (unsigned int cell = 0; cell < cell_dofs_.size(); ++cell) {
+    cell_kernel(cell, x, gradient, &hessian);
+    // Linear elements: every DoF of a cell sits on a vertex, the row of its welded vertex.
+    for (unsigned int i = 0; i < n_local; ++i) row[i] = dof_vertex_row_[cell_dofs_[cell][i]];
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = 3 * local_node_[i] + local_component_[i];
       residual_N[row[i]] += gradient[a];

@@ -1,0 +1,96 @@
+#include "fem/petsc_linear_solver.h"
+
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+
+void check(PetscErrorCode code, const char* call) {
+  if (code != 0) throw std::runtime_error(std::string("PETSc call failed: ") + call);
+}
+
+LinearSolverKind next_in_chain(LinearSolverKind kind) {
+  return kind == LinearSolverKind::cg_amg ? LinearSolverKind::gmres_amg : LinearSolverKind::direct;
+}
+
+}  // namespace
+
+PetscLinearSolver::PetscLinearSolver(LinearSolverKind kind, double relative_tolerance,
+                                     int max_iterations, MPI_Comm comm)
+    : kind_(kind),
+      relative_tolerance_(relative_tolerance),
+      max_iterations_(max_iterations),
+      comm_(comm) {}
+
+PetscLinearSolver::~PetscLinearSolver() {
+  reset();
+}
+
+void PetscLinearSolver::reset() {
+  if (ksp_) KSPDestroy(&ksp_);
+  ksp_ = nullptr;
+}
+
+void PetscLinearSolver::configure() {
+  check(KSPCreate(comm_, &ksp_), "KSPCreate");
+  PC pc;
+  check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+  switch (kind_) {
+    case LinearSolverKind::direct:
+      check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
+      check(PCSetType(pc, PCLU), "PCSetType");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+      return;
+    case LinearSolverKind::cg_amg:
+      check(KSPSetType(ksp_, KSPCG), "KSPSetType");
+      break;
+    case LinearSolverKind::gmres_amg:
+      check(KSPSetType(ksp_, KSPGMRES), "KSPSetType");
+      check(KSPGMRESSetRestart(ksp_, 100), "KSPGMRESSetRestart");
+      break;
+  }
+  check(PCSetType(pc, PCHYPRE), "PCSetType");
+  check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  // The stopping rule on the true residual, ||b - A x|| <= tol ||b||, for both methods.
+  check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  if (kind_ == LinearSolverKind::gmres_amg) check(KSPSetPCSide(ksp_, PC_RIGHT), "KSPSetPCSide");
+  check(KSPSetTolerances(ksp_, relative_tolerance_, 0.0, PETSC_DEFAULT, max_iterations_),
+        "KSPSetTolerances");
+}
+
+bool PetscLinearSolver::attempt(Mat A, Vec b, Vec x, int& iterations, std::string& reason) {
+  if (!ksp_) configure();
+  check(KSPSetOperators(ksp_, A, A), "KSPSetOperators");
+  check(VecSet(x, 0.0), "VecSet");
+  // Errors inside the factorization (a singular pivot) are reported, not fatal.
+  const PetscErrorCode code = KSPSolve(ksp_, b, x);
+  PetscInt n = 0;
+  KSPGetIterationNumber(ksp_, &n);
+  iterations = static_cast<int>(n);
+  KSPConvergedReason converged;
+  KSPGetConvergedReason(ksp_, &converged);
+  if (code == 0 && converged > 0) return true;
+  reason = code != 0 ? "PETSc error " + std::to_string(code)
+                     : std::string(KSPConvergedReasons[converged]);
+  return false;
+}
+
+LinearSolveResult PetscLinearSolver::solve(Mat A, Vec b, Vec x) {
+  LinearSolveResult result;
+  for (;;) {
+    std::string reason;
+    result.used = kind_;
+    if (attempt(A, b, x, result.iterations, reason)) return result;
+    if (kind_ == LinearSolverKind::direct)
+      throw std::runtime_error(result.note + "direct solve failed (" + reason + ")");
+    const LinearSolverKind next = next_in_chain(kind_);
+    result.note += std::string(to_string(kind_)) + " failed after " +
+                   std::to_string(result.iterations) + " iterations (" + reason +
+                   "), switched to " + to_string(next) + "; ";
+    kind_ = next;
+    reset();
+  }
+}
+
+}  // namespace tightfit

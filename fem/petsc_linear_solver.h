@@ -1,0 +1,56 @@
+// The Newton systems' PETSc solver, kept alive across Newton iterations, augmented-Lagrangian
+// rounds and load steps. Plain PETSc (no deal.II): the matrix and vectors are handed over as
+// PETSc handles.
+//
+// Reuse: the KSP keeps its operator. When the matrix keeps its nonzero pattern (the tangent's
+// pattern is fixed once the constraints are), PCSetUp sees SAME_NONZERO_PATTERN and MUMPS
+// redoes only the numerical factorization; the ordering and symbolic analysis of the first
+// solve are kept.
+//
+// Fallback: conjugate gradients need a symmetric positive definite tangent. When CG reports an
+// indefinite matrix or preconditioner, or stops without converging, the system is solved again
+// by GMRES with the same BoomerAMG, and the solver stays with GMRES; when GMRES fails too, by
+// MUMPS. Each switch is recorded in `note` of the result that made it.
+#pragma once
+
+#include "fem/fem_parameters.h"
+
+#include <petscksp.h>
+
+#include <string>
+
+namespace tightfit {
+
+struct LinearSolveResult {
+  int iterations = 0;  // Krylov iterations (0 for the direct solve)
+  LinearSolverKind used = LinearSolverKind::direct;
+  std::string note;  // why the solver switched, empty otherwise
+};
+
+class PetscLinearSolver {
+ public:
+  PetscLinearSolver(LinearSolverKind kind, double relative_tolerance, int max_iterations,
+                    MPI_Comm comm);
+  ~PetscLinearSolver();
+  PetscLinearSolver(const PetscLinearSolver&) = delete;
+  PetscLinearSolver& operator=(const PetscLinearSolver&) = delete;
+
+  // Solves A x = b; throws std::runtime_error when every solver in the chain fails.
+  LinearSolveResult solve(Mat A, Vec b, Vec x);
+  // Forgets the factorization and preconditioner (call when the matrix's pattern changes).
+  void reset();
+  LinearSolverKind kind() const { return kind_; }
+
+ private:
+  void configure();
+  // Returns true when the KSP converged; `iterations` and `reason` describe the attempt.
+  bool attempt(Mat A, Vec b, Vec x, int& iterations, std::string& reason);
+
+  LinearSolverKind kind_;
+  double relative_tolerance_;
+  int max_iterations_;
+  MPI_Comm comm_;
+  KSP ksp_ = nullptr;
+};
+
+}  // namespace tightfit
