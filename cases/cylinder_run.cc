@@ -107,7 +107,10 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     if (write_vtu) {
       char name[64];
       std::snprintf(name, sizeof name, "garment_%04zu.vtu", step);
-      write_garment_vtu(path(name), setup.mesh, m.state, m.field, m.alpha);
+      SurfaceVtu garment = garment_vtu(setup.mesh, m.state, m.field, m.alpha);
+      for (const auto& [array_name, values] : backend->extra_point_data())
+        garment.add_point_scalar(array_name, values);
+      garment.write(path(name));
       garment_series->add(m.alpha, name);
       std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
       write_body_vtu(path(name), setup.body->display_mesh());

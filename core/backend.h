@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tightfit {
@@ -68,6 +69,11 @@ class Backend {
   virtual StepReport solve(const LoadStep& step) = 0;
   // The equilibrium just reached (or the current state after a failure).
   virtual SurfaceState state() const = 0;
+  // Optional per-vertex arrays a backend adds to the garment output beside the shared
+  // extractor's (name, one value per welded vertex), e.g. its own contact traction in Pa.
+  virtual std::vector<std::pair<std::string, std::vector<double>>> extra_point_data() const {
+    return {};
+  }
 };
 
 }  // namespace tightfit

@@ -837,6 +837,10 @@ SurfaceState FemBackend::state() const {
   return impl_->state_;
 }
 
+std::vector<std::pair<std::string, std::vector<double>>> FemBackend::extra_point_data() const {
+  return {{"contact_traction_Pa", impl_->traction_Pa_}};
+}
+
 std::vector<double> FemBackend::contact_traction_Pa() const {
   return impl_->traction_Pa_;
 }

@@ -26,6 +26,8 @@ class FemBackend final : public Backend {
   // Throws SolverError naming the step (index, alpha) and the residual when it fails.
   StepReport solve(const LoadStep& step) override;
   SurfaceState state() const override;
+  // contact_traction_Pa() as "contact_traction_Pa", beside the extractor's pressure_Pa.
+  std::vector<std::pair<std::string, std::vector<double>>> extra_point_data() const override;
 
   // Contact traction at each welded vertex, Pa: the contact multiplier over the vertex's
   // current barycentric area (zero off contact). Written beside the extractor's pressure.
