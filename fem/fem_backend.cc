@@ -581,8 +581,18 @@ int FemBackend::Implementation::newton(const LoadStep& step, std::vector<int>& k
     dealii::Vector<double> trial(x_);
     bool tangent_current = false;
     for (int escalation = 0;; ++escalation) {
-      krylov_iterations.push_back(shift_N_per_m_ > 0.0 ? solve_shifted(step, shift_N_per_m_, notes)
-                                                       : solve_linear_system(step, notes));
+      // Yamashita and Fukushima's mu ~ |R|: it damps the step where the residual is large and
+      // vanishes with it, so that convergence stays quadratic, even when the tangent is
+      // singular at the solution (a tube touching the body at zero tension).
+      const double shift_N_per_m =
+          std::max(shift_N_per_m_, parameters_.residual_shift_factor * residual_N / mean_edge_m_);
+      if (escalation == 0) {
+        // The tangent and residual at x_ are assembled: shift in place (same pattern).
+        if (shift_N_per_m > 0.0) MatShift(tangent_.petsc_matrix(), shift_N_per_m);
+        krylov_iterations.push_back(solve_linear_system(step, notes));
+      } else {
+        krylov_iterations.push_back(solve_shifted(step, shift_N_per_m, notes));
+      }
       const dealii::Vector<double> increment = gather_increment();
       // A step longer than half an edge leaves the region where the linearisation holds (and
       // may carry the garment, which has no bending stiffness, into a folded state): shorten

@@ -69,6 +69,12 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Added to the tangent's diagonal, N/m, for bodies other than a cylinder "
                     "whose rigid motions are not pinned. It changes the Newton path, never the "
                     "converged state.");
+  prm.declare_entry("Residual shift factor", "1", Double(0, 1e12),
+                    "Each Newton system is solved with the tangent shifted by theta |R|_max / h "
+                    "(N/m; |R|_max the largest residual force, N; h the mean rest edge, m): this "
+                    "theta, dimensionless. The shift vanishes with the residual (quadratic "
+                    "convergence is kept) and lets Newton through states where the tangent is "
+                    "singular, such as a tube touching the body at zero tension. 0 turns it off.");
   prm.leave_subsection();
 }
 
@@ -94,6 +100,7 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   max_augmented_lagrangian_iterations = prm.get_integer("Maximum augmented Lagrangian iterations");
   gap_tolerance_m = prm.get_double("Gap tolerance");
   tangent_shift_N_per_m = prm.get_double("Tangent shift");
+  residual_shift_factor = prm.get_double("Residual shift factor");
   prm.leave_subsection();
 }
 

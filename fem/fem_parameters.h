@@ -37,6 +37,9 @@ struct FemParameters {
   // Added to the tangent's diagonal (N/m) to remove rigid motions of bodies that do not
   // pin them; changes the path, never the converged state (the residual is untouched).
   double tangent_shift_N_per_m = 0.0;
+  // Levenberg-Marquardt shift mu = theta |R|_max / h (N/m) of each Newton system; theta here,
+  // dimensionless. Zero turns it off.
+  double residual_shift_factor = 1.0;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   // Reads the subsection; throws std::invalid_argument naming the entry on a bad value.
