@@ -16,12 +16,8 @@ LinearSolverKind next_in_chain(LinearSolverKind kind) {
 
 }  // namespace
 
-PetscLinearSolver::PetscLinearSolver(LinearSolverKind kind, double relative_tolerance,
-                                     int max_iterations, MPI_Comm comm)
-    : kind_(kind),
-      relative_tolerance_(relative_tolerance),
-      max_iterations_(max_iterations),
-      comm_(comm) {}
+PetscLinearSolver::PetscLinearSolver(LinearSolverKind kind, int max_iterations, MPI_Comm comm)
+    : kind_(kind), max_iterations_(max_iterations), comm_(comm) {}
 
 PetscLinearSolver::~PetscLinearSolver() {
   reset();
@@ -55,8 +51,11 @@ void PetscLinearSolver::configure() {
   // The stopping rule on the true residual, ||b - A x|| <= tol ||b||, for both methods.
   check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   if (kind_ == LinearSolverKind::gmres_amg) check(KSPSetPCSide(ksp_, PC_RIGHT), "KSPSetPCSide");
-  check(KSPSetTolerances(ksp_, relative_tolerance_, 0.0, PETSC_DEFAULT, max_iterations_),
-        "KSPSetTolerances");
+  check(KSPSetTolerances(ksp_, 1e-10, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
+  // PETSc options with the prefix fem_ (PETSC_OPTIONS="-fem_pc_hypre_boomeramg_strong_threshold
+  // 0.5", say) tune the Krylov methods without a rebuild.
+  check(KSPSetOptionsPrefix(ksp_, "fem_"), "KSPSetOptionsPrefix");
+  check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
 }
 
 bool PetscLinearSolver::attempt(Mat A, Vec b, Vec x, int& iterations, std::string& reason) {
@@ -76,11 +75,15 @@ bool PetscLinearSolver::attempt(Mat A, Vec b, Vec x, int& iterations, std::strin
   return false;
 }
 
-LinearSolveResult PetscLinearSolver::solve(Mat A, Vec b, Vec x) {
+LinearSolveResult PetscLinearSolver::solve(Mat A, Vec b, Vec x, double relative_tolerance) {
   LinearSolveResult result;
   for (;;) {
     std::string reason;
     result.used = kind_;
+    if (!ksp_) configure();
+    if (kind_ != LinearSolverKind::direct)
+      check(KSPSetTolerances(ksp_, relative_tolerance, 0.0, PETSC_DEFAULT, max_iterations_),
+            "KSPSetTolerances");
     if (attempt(A, b, x, result.iterations, reason)) return result;
     if (kind_ == LinearSolverKind::direct)
       throw std::runtime_error(result.note + "direct solve failed (" + reason + ")");

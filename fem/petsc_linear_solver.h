@@ -29,14 +29,14 @@ struct LinearSolveResult {
 
 class PetscLinearSolver {
  public:
-  PetscLinearSolver(LinearSolverKind kind, double relative_tolerance, int max_iterations,
-                    MPI_Comm comm);
+  PetscLinearSolver(LinearSolverKind kind, int max_iterations, MPI_Comm comm);
   ~PetscLinearSolver();
   PetscLinearSolver(const PetscLinearSolver&) = delete;
   PetscLinearSolver& operator=(const PetscLinearSolver&) = delete;
 
-  // Solves A x = b; throws std::runtime_error when every solver in the chain fails.
-  LinearSolveResult solve(Mat A, Vec b, Vec x);
+  // Solves A x = b to ||b - A x|| <= relative_tolerance ||b|| (Krylov methods; the direct
+  // solve is exact); throws std::runtime_error when every solver in the chain fails.
+  LinearSolveResult solve(Mat A, Vec b, Vec x, double relative_tolerance);
   // Forgets the factorization and preconditioner (call when the matrix's pattern changes).
   void reset();
   LinearSolverKind kind() const { return kind_; }
@@ -47,7 +47,6 @@ class PetscLinearSolver {
   bool attempt(Mat A, Vec b, Vec x, int& iterations, std::string& reason);
 
   LinearSolverKind kind_;
-  double relative_tolerance_;
   int max_iterations_;
   MPI_Comm comm_;
   KSP ksp_ = nullptr;
