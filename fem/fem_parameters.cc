@@ -36,11 +36,17 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Linear solver", to_string(d.linear_solver),
                     Selection("direct|cg-amg|gmres-amg"),
                     "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (small "
-                    "meshes); 'cg-amg' is conjugate gradients preconditioned by BoomerAMG "
+                    "meshes; its symbolic analysis is reused while the pattern holds); 'cg-amg' "
+                    "is conjugate gradients preconditioned by BoomerAMG (large meshes); "
+                    "'gmres-amg' is GMRES with BoomerAMG. When CG meets an indefinite tangent it "
+                    "switches to GMRES, and GMRES to MUMPS, noted in the step's log line. PETSc "
+                    "options with the prefix fem_ tune the Krylov methods."); 'cg-amg' is conjugate gradients preconditioned by BoomerAMG "
                     "(large meshes); 'gmres-amg' is GMRES with BoomerAMG.");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
-                    "Krylov solvers stop when the residual falls below this fraction of the "
-                    "right-hand side (dimensionless). Unused by 'direct'.");
+                    "Krylov solvers stop when the residual falls below eta times the right-hand "
+                    "side, eta = 0.9 (|R_k|/|R_k-1|)^2 clamped to [this value, 1e-2] (inexact "
+                    "Newton), and at this value where the residual falls by less than half "
+                    "(dimensionless). Unused by 'direct'.");
   prm.declare_entry("Maximum linear iterations", std::to_string(d.max_linear_iterations),
                     Integer(1, 100000), "Krylov iteration limit per Newton step (count).");
   prm.declare_entry("Residual tolerance", "1e-10", Double(1e-15, 1e-2),

@@ -20,7 +20,8 @@ struct FemParameters {
   // internal force that of the mass-spring backend's triangle element.
   int element_degree = 1;
   LinearSolverKind linear_solver = LinearSolverKind::direct;
-  // Krylov stopping rule: residual relative to the right-hand side.
+  // Krylov stopping rule: residual relative to the right-hand side; the floor of the inexact
+  // Newton forcing term (fem_backend.cc, newton()).
   double linear_tolerance = 1e-10;
   int max_linear_iterations = 1000;
   // Newton stops when the largest residual force on a free degree of freedom is below
