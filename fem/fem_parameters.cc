@@ -40,8 +40,7 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "is conjugate gradients preconditioned by BoomerAMG (large meshes); "
                     "'gmres-amg' is GMRES with BoomerAMG. When CG meets an indefinite tangent it "
                     "switches to GMRES, and GMRES to MUMPS, noted in the step's log line. PETSc "
-                    "options with the prefix fem_ tune the Krylov methods."); 'cg-amg' is conjugate gradients preconditioned by BoomerAMG "
-                    "(large meshes); 'gmres-amg' is GMRES with BoomerAMG.");
+                    "options with the prefix fem_ tune the Krylov methods.");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
                     "Krylov solvers stop when the residual falls below eta times the right-hand "
                     "side, eta = 0.9 (|R_k|/|R_k-1|)^2 clamped to [this value, 1e-2] (inexact "
