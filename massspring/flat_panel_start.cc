@@ -60,8 +60,7 @@ FlatPanelStart::FlatPanelStart(const Problem& problem, const MassSpringParameter
   size_m_ = std::sqrt(rest_area(welded));
   // Fails early (fewer than two panels) rather than at the first load step.
   flat_positions_m();
-  for (auto* buffer : {&x_, &v_, &force_, &stage_x_, &stage_v_, &sum_x_, &sum_v_})
-    buffer->assign(n, Vec3::Zero());
+  for (auto* buffer : {&x_, &v_}) buffer->assign(n, Vec3::Zero());
 }
 
 std::vector<Vec3> FlatPanelStart::flat_positions_m() const {
@@ -84,36 +83,13 @@ void FlatPanelStart::forces(const std::vector<Vec3>& x, bool gravity_on,
 }
 
 void FlatPanelStart::rk4_frame(double dt, double c, bool gravity_on) {
-  // Classical RK4 on y = (x, v), y' = (v, f(x)/m - c v), stages accumulated with weights
-  // 1, 2, 2, 1 (as MassSpringBackend).
-  const std::size_t n = x_.size();
-  const double stage_step[3] = {0.5 * dt, 0.5 * dt, dt};
-  const double weight[4] = {1.0, 2.0, 2.0, 1.0};
-  for (int stage = 0; stage < 4; ++stage) {
-    const std::vector<Vec3>& xs = stage == 0 ? x_ : stage_x_;
-    const std::vector<Vec3>& vs = stage == 0 ? v_ : stage_v_;
-    forces(xs, gravity_on, force_);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 velocity = vs[i];
-      const Vec3 acceleration = force_[i] / mass_kg_[i] - c * velocity;
-      if (stage == 0) {
-        sum_x_[i] = velocity;
-        sum_v_[i] = acceleration;
-      } else {
-        sum_x_[i] += weight[stage] * velocity;
-        sum_v_[i] += weight[stage] * acceleration;
-      }
-      if (stage < 3) {
-        stage_x_[i] = x_[i] + stage_step[stage] * velocity;
-        stage_v_[i] = v_[i] + stage_step[stage] * acceleration;
-      }
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    x_[i] += (dt / 6.0) * sum_x_[i];
-    v_[i] += (dt / 6.0) * sum_v_[i];
+  integrator_.frame(x_, v_, mass_kg_, dt, c,
+                    [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
+                      forces(x, gravity_on, force);
+                      return 0.0;
+                    });
+  for (std::size_t i = 0; i < x_.size(); ++i)
     if (held_[i]) v_[i] -= v_[i].dot(held_direction_) * held_direction_;
-  }
 }
 
 double FlatPanelStart::choose_time_step_s() const {

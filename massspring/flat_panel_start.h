@@ -9,6 +9,7 @@
 #include "contact/cylinder.h"
 #include "core/backend.h"
 #include "massspring/bending_hinges.h"
+#include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
 #include "massspring/seam_springs.h"
 #include "massspring/triangle_elements.h"
@@ -70,7 +71,7 @@ class FlatPanelStart {
   double size_m_ = 0.0;
 
   std::vector<Vec3> x_, v_;
-  mutable std::vector<Vec3> force_, stage_x_, stage_v_, sum_x_, sum_v_;
+  DampedRk4 integrator_;
 };
 
 }  // namespace tightfit

@@ -66,8 +66,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
     x_[mesh.welded_index[u]] = Vec3(p.x(), p.y(), 0.0);
   }
   v_.assign(n, Vec3::Zero());
-  for (auto* buffer : {&force_, &stage_x_, &stage_v_, &sum_x_, &sum_v_})
-    buffer->assign(n, Vec3::Zero());
+  force_.assign(n, Vec3::Zero());
   if (parameters_.placement == Placement::flat_panels)
     flat_start_ = std::make_unique<FlatPanelStart>(problem_, parameters_);
 }
@@ -110,42 +109,14 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
 }
 
 double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double stop_below_N) {
-  // Classical RK4 on y = (x, v), y' = (v, f(x)/m - c v): stages accumulate into sum_x_,
-  // sum_v_ with weights 1, 2, 2, 1 so no per-stage copies are kept.
-  const std::size_t n = x_.size();
-  const double stage_step[3] = {0.5 * dt, 0.5 * dt, dt};
-  const double weight[4] = {1.0, 2.0, 2.0, 1.0};
-  double residual = 0.0;
-  for (int stage = 0; stage < 4; ++stage) {
-    const std::vector<Vec3>& xs = stage == 0 ? x_ : stage_x_;
-    const std::vector<Vec3>& vs = stage == 0 ? v_ : stage_v_;
-    const double r = residual_forces(xs, gravity_on, force_);
-    if (stage == 0) {
-      residual = r;
-      // The state is already stable (or broken): leave it as it is.
-      if (!(r >= stop_below_N) || !std::isfinite(r)) return r;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 velocity = vs[i];
-      const Vec3 acceleration = force_[i] / mass_kg_[i] - c * velocity;
-      if (stage == 0) {
-        sum_x_[i] = velocity;
-        sum_v_[i] = acceleration;
-      } else {
-        sum_x_[i] += weight[stage] * velocity;
-        sum_v_[i] += weight[stage] * acceleration;
-      }
-      if (stage < 3) {
-        stage_x_[i] = x_[i] + stage_step[stage] * velocity;
-        stage_v_[i] = v_[i] + stage_step[stage] * acceleration;
-      }
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    x_[i] += (dt / 6.0) * sum_x_[i];
-    v_[i] += (dt / 6.0) * sum_v_[i];
+  const double residual = integrator_.frame(
+      x_, v_, mass_kg_, dt, c,
+      [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
+        return residual_forces(x, gravity_on, force);
+      },
+      stop_below_N);
+  for (std::size_t i = 0; i < x_.size(); ++i)
     if (held_[i]) remove_held_component(v_[i]);
-  }
   return residual;
 }
 

@@ -15,6 +15,7 @@
 
 #include "core/backend.h"
 #include "massspring/bending_hinges.h"
+#include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
 #include "massspring/triangle_elements.h"
 
@@ -80,8 +81,9 @@ class MassSpringBackend final : public Backend {
   std::unique_ptr<FlatPanelStart> flat_start_;
 
   std::vector<Vec3> x_, v_;
-  // RK4 work space, allocated once.
-  mutable std::vector<Vec3> force_, stage_x_, stage_v_, sum_x_, sum_v_;
+  DampedRk4 integrator_;
+  // Force work space for the residual outside the frames, allocated once.
+  mutable std::vector<Vec3> force_;
 };
 
 }  // namespace tightfit

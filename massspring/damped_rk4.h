@@ -1,0 +1,33 @@
+// The paper's integrator (Section 2.1): classical fourth-order Runge-Kutta on
+// y = (x, v), y' = (v, f(x)/m - c v), with mass-proportional damping c. Shared by the load
+// steps and the flat-panel start, which differ only in their forces and stop rules.
+#pragma once
+
+#include "core/types.h"
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace tightfit {
+
+class DampedRk4 {
+ public:
+  // Fills `force` (N) for positions `x` and returns a scalar measure of it (the residual a
+  // stop rule reads).
+  using Forces = std::function<double(const std::vector<Vec3>& x, std::vector<Vec3>& force)>;
+
+  // Advances (x, v) by one frame of dt_s and returns the force measure at the frame's start.
+  // When that measure is below `stop_below` or not finite, x and v are left as they are: the
+  // state is already stable (or broken) and the caller decides.
+  double frame(std::vector<Vec3>& x, std::vector<Vec3>& v, const std::vector<double>& mass_kg,
+               double dt_s, double damping_per_s, const Forces& forces,
+               double stop_below = -std::numeric_limits<double>::infinity());
+
+ private:
+  // Work space, allocated at the first frame (and again only if the particle count changes): the
+  // stages accumulate into sum_x_, sum_v_ with weights 1, 2, 2, 1, so no per-stage copies are kept.
+  std::vector<Vec3> force_, stage_x_, stage_v_, sum_x_, sum_v_;
+};
+
+}  // namespace tightfit
