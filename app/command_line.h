@@ -14,7 +14,8 @@ struct CommandLine {
   std::vector<std::string> overrides;      // "Path/To/Entry=value"
   int levels = 3;                          // convergence: number of meshes
   std::string parameters_format = "text";  // print-parameters: text, prm or json
-  bool this_rank_writes = true;            // false on every MPI rank but the first
+  int rank = 0;                            // this process among the MPI ranks
+  int n_ranks = 1;
 };
 
 // Thrown for a malformed command line; the message says what is wrong.

@@ -14,7 +14,8 @@ int compare_command(const CommandLine& cl, std::ostream& out) {
   CaseFile file;
   file.read(cl.case_files.front(), cl.overrides);
   CaseParameters parameters = file.parameters();
-  parameters.output.write_files = cl.this_rank_writes;
+  parameters.output.rank = cl.rank;
+  parameters.output.n_ranks = cl.n_ranks;
   auto setup = make_cylinder_setup(parameters);
   const std::string dir = output_directory_for(cl, cl.case_files.front(),
                                                setup->parameters.output.directory + "_compare");

@@ -38,7 +38,9 @@ TextTable convergence_table(const ConvergenceStudy& study, int n_levels) {
 int convergence_command(const CommandLine& cl, std::ostream& out) {
   CaseFile file;
   file.read(cl.case_files.front(), cl.overrides);
-  const CaseParameters parameters = file.parameters();
+  CaseParameters parameters = file.parameters();
+  parameters.output.rank = cl.rank;
+  parameters.output.n_ranks = cl.n_ranks;
   const std::string dir =
       output_directory_for(cl, cl.case_files.front(), parameters.output.directory + "_convergence");
   std::vector<NamedBackendFactory> backends;

@@ -13,12 +13,14 @@
 int main(int argc, char** argv) {
   using namespace tightfit;
   MpiSession mpi(argc, argv);
-  // Every rank computes; the first one alone prints and writes.
+  // Every rank computes; the first one alone prints (and writes all files but the pieces of
+  // parallel garment output).
   std::ostringstream discarded;
   std::ostream& out = mpi.is_first_rank() ? std::cout : discarded;
   try {
     CommandLine cl = parse_command_line(argc, argv);
-    cl.this_rank_writes = mpi.is_first_rank();
+    cl.rank = mpi.rank();
+    cl.n_ranks = mpi.n_ranks();
     if (cl.command == "help") {
       out << usage_text();
       return 0;

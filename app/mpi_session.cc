@@ -15,7 +15,11 @@ MpiSession::MpiSession(int& argc, char**& argv) : state_(std::make_unique<State>
 MpiSession::~MpiSession() = default;
 
 bool MpiSession::is_first_rank() const {
-  return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  return rank() == 0;
+}
+
+int MpiSession::rank() const {
+  return static_cast<int>(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
 }
 
 int MpiSession::n_ranks() const {

@@ -1,6 +1,6 @@
 // MPI (and PETSc, through deal.II) for the whole run: started before anything else, finished
 // after everything else. Under `mpirun -np N` the ranks share the FE backend's solves; the
-// first rank alone prints and writes files.
+// first rank alone prints; files are shared out by rank (OutputSettings).
 #pragma once
 
 #include <memory>
@@ -15,6 +15,7 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
 
   bool is_first_rank() const;
+  int rank() const;  // 0 .. n_ranks() - 1 in MPI_COMM_WORLD
   int n_ranks() const;
 
  private:

@@ -26,7 +26,8 @@ int run_command(const CommandLine& cl, std::ostream& out) {
     files.push_back(std::make_unique<CaseFile>());
     files.back()->read(path, cl.overrides);
     CaseParameters parameters = files.back()->parameters();
-    parameters.output.write_files = cl.this_rank_writes;
+    parameters.output.rank = cl.rank;
+    parameters.output.n_ranks = cl.n_ranks;
     setups.push_back(make_cylinder_setup(parameters));
   }
 

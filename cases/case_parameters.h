@@ -52,8 +52,14 @@ struct PressureSettings {
 struct OutputSettings {
   std::string directory = "output";
   bool write_vtu = true;
-  // False on every MPI rank but the first: the ranks share one result, one of them writes it.
+  // False for a run that only wants the numbers back (no file at all).
   bool write_files = true;
+  // This process among the MPI ranks of the run. Every rank holds the whole result: the first
+  // alone writes the CSV tables, the body and the .pvd collections; with more than one rank
+  // each writes its piece of the garment of every load step (a .pvtu of n_ranks pieces).
+  int rank = 0;
+  int n_ranks = 1;
+  bool is_first_rank() const { return rank == 0; }
 };
 
 struct CaseParameters {

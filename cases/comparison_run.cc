@@ -2,6 +2,7 @@
 
 #include "io/csv_table.h"
 #include "io/pvd_writer.h"
+#include "io/vtu_share.h"
 #include "io/vtu_writer.h"
 
 #include <algorithm>
@@ -38,23 +39,34 @@ ComparisonResult run_comparison(CylinderSetup& setup, const std::string& first_n
   log << "Backend " << second_name << ":\n";
   result.second = run_cylinder_case(setup, make_second, path(second_name), log);
 
-  if (!setup.parameters.output.write_files) return result;
-  CsvTable table(path("compare.csv"),
-                 {"step", "alpha", "p_mean_Pa_" + first_name, "p_mean_Pa_" + second_name,
-                  "p_theory_Pa", "rel_diff", "p_std_Pa_" + first_name, "p_std_Pa_" + second_name,
-                  "rel_error_" + first_name, "rel_error_" + second_name, "max_vertex_diff_Pa"});
-  const bool write_vtu = setup.parameters.output.write_vtu;
+  // As in run_cylinder_case: the first rank writes the table and the collection, every rank
+  // its piece of the difference surface when there are several.
+  const OutputSettings& output = setup.parameters.output;
+  const bool write_table = output.write_files && output.is_first_rank();
+  const bool write_vtu = output.write_files && output.write_vtu;
+  if (!write_table && !write_vtu) return result;
+  fs::create_directories(output_dir);
+  std::unique_ptr<CsvTable> table;
   std::unique_ptr<PvdWriter> series;
-  if (write_vtu) series = std::make_unique<PvdWriter>(path("difference.pvd"));
+  if (write_table) {
+    table = std::make_unique<CsvTable>(
+        path("compare.csv"),
+        std::vector<std::string>{
+            "step", "alpha", "p_mean_Pa_" + first_name, "p_mean_Pa_" + second_name, "p_theory_Pa",
+            "rel_diff", "p_std_Pa_" + first_name, "p_std_Pa_" + second_name,
+            "rel_error_" + first_name, "rel_error_" + second_name, "max_vertex_diff_Pa"});
+    if (write_vtu) series = std::make_unique<PvdWriter>(path("difference.pvd"));
+  }
   const std::size_t n = std::min(result.first.steps.size(), result.second.steps.size());
   for (std::size_t i = 0; i < n; ++i) {
     const StepMeasurement& a = result.first.steps[i];
     const StepMeasurement& b = result.second.steps[i];
     const double rel_diff = a.p_mean_Pa() > 0 ? (b.p_mean_Pa() - a.p_mean_Pa()) / a.p_mean_Pa()
                                               : std::numeric_limits<double>::quiet_NaN();
-    table.write_row({a.step, a.alpha, a.p_mean_Pa(), b.p_mean_Pa(), a.p_theory_Pa, rel_diff,
-                     a.summary.std_Pa, b.summary.std_Pa, a.rel_error, b.rel_error,
-                     largest_vertex_difference(a, b)});
+    if (table)
+      table->write_row({a.step, a.alpha, a.p_mean_Pa(), b.p_mean_Pa(), a.p_theory_Pa, rel_diff,
+                        a.summary.std_Pa, b.summary.std_Pa, a.rel_error, b.rel_error,
+                        largest_vertex_difference(a, b)});
     if (!write_vtu) continue;
     std::vector<double> difference(a.field.pressure_Pa.size());
     for (std::size_t v = 0; v < difference.size(); ++v)
@@ -62,10 +74,10 @@ ComparisonResult run_comparison(CylinderSetup& setup, const std::string& first_n
     SurfaceVtu vtu = garment_vtu(setup.mesh, b.state, b.field, b.alpha);
     vtu.add_point_scalar("pressure_Pa_" + first_name, a.field.pressure_Pa);
     vtu.add_point_scalar("pressure_difference_Pa", difference);
-    char name[64];
-    std::snprintf(name, sizeof name, "difference_%04zu.vtu", i);
-    vtu.write(path(name));
-    series->add(b.alpha, name);
+    char stem[64];
+    std::snprintf(stem, sizeof stem, "difference_%04zu", i);
+    const std::string file = write_vtu_share(vtu, output_dir, stem, output.rank, output.n_ranks);
+    if (series) series->add(b.alpha, file);
   }
   return result;
 }

@@ -3,6 +3,7 @@
 #include "core/units.h"
 #include "io/csv_table.h"
 #include "io/pvd_writer.h"
+#include "io/vtu_share.h"
 #include "io/vtu_writer.h"
 
 #include <chrono>
@@ -74,8 +75,13 @@ void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_s
 RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_backend,
                             const std::string& output_dir, std::ostream& log) {
   namespace fs = std::filesystem;
-  const bool write_files = setup.parameters.output.write_files;
-  if (write_files) fs::create_directories(output_dir);
+  const OutputSettings& output = setup.parameters.output;
+  // Every rank holds the whole result. The first writes the tables, the body and the
+  // collections; the garment is written by every rank, one piece each, when there are several.
+  const bool write_tables = output.write_files && output.is_first_rank();
+  const bool write_garment = output.write_files && output.write_vtu;
+  const bool write_series = write_tables && output.write_vtu;  // .pvd collections, body
+  if (write_tables || write_garment) fs::create_directories(output_dir);
   const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
 
   RunResult result;
@@ -85,11 +91,10 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
   backend->set_positions(setup.initial_positions());
 
   std::unique_ptr<CsvTable> table;
-  if (write_files)
+  if (write_tables)
     table = std::make_unique<CsvTable>(path("pressure.csv"), pressure_table_columns());
-  const bool write_vtu = write_files && setup.parameters.output.write_vtu;
   std::unique_ptr<PvdWriter> garment_series, body_series;
-  if (write_vtu) {
+  if (write_series) {
     garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
     body_series = std::make_unique<PvdWriter>(path("body.pvd"));
   }
@@ -104,21 +109,27 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     }
     const StepMeasurement& m = result.steps.back();
     if (table) table->write_row(pressure_row(m));
-    if (write_vtu) {
-      char name[64];
-      std::snprintf(name, sizeof name, "garment_%04zu.vtu", step);
+    if (write_garment) {
+      char stem[64];
+      std::snprintf(stem, sizeof stem, "garment_%04zu", step);
       SurfaceVtu garment = garment_vtu(setup.mesh, m.state, m.field, m.alpha);
       for (const auto& [array_name, values] : backend->extra_point_data())
         garment.add_point_scalar(array_name, values);
-      garment.write(path(name));
-      garment_series->add(m.alpha, name);
+      // The first rank lists the step only after its own piece and the .pvtu header are on
+      // disk; the other ranks' pieces may land a moment later (complete when the run ends).
+      const std::string file =
+          write_vtu_share(garment, output_dir, stem, output.rank, output.n_ranks);
+      if (garment_series) garment_series->add(m.alpha, file);
+    }
+    if (write_series) {
+      char name[64];
       std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
       write_body_vtu(path(name), setup.body->display_mesh());
       body_series->add(m.alpha, name);
     }
     print_progress(log, m, setup.alphas.size());
   }
-  if (write_files && !result.steps.empty())
+  if (write_tables && !result.steps.empty())
     write_angular_profile(path("pressure_theta.csv"), setup, result.steps.back());
   result.completed = result.failure.empty();
   return result;

@@ -1,5 +1,7 @@
 #include "io/pvd_writer.h"
 
+#include "io/xml_text.h"
+
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -8,30 +10,6 @@
 namespace tightfit {
 
 namespace {
-
-// File names go inside a double-quoted XML attribute.
-std::string xml_escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string time_text(double time) {
   // 17 significant digits: the time read back is the double written.

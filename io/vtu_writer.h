@@ -38,6 +38,20 @@ class SurfaceVtu {
   // Throws std::runtime_error naming `path` when it cannot be written.
   void write(const std::string& path) const;
 
+  // The triangles [first_triangle, end_triangle) alone (std::invalid_argument when the range
+  // is not within this surface), with the points they use, in the order of their index here,
+  // every point array restricted to those points, and the same field data: one piece of a
+  // parallel file. A point shared with triangles outside the range is in both pieces.
+  SurfaceVtu piece(std::size_t first_triangle, std::size_t end_triangle) const;
+
+  // The header of a parallel file (.pvtu, VTK's PUnstructuredGrid) whose pieces are
+  // `piece_files` (relative to the header's folder), each written by write() from a piece()
+  // of this surface: it declares this surface's point arrays with the same names, types and
+  // component counts. Written through a temporary file renamed over `path`, so a reader never
+  // sees half a header. Throws std::runtime_error naming `path` when it cannot be written.
+  void write_pvtu_header(const std::string& path,
+                         const std::vector<std::string>& piece_files) const;
+
   std::size_t n_points() const { return points_m_.size(); }
   std::size_t n_triangles() const { return triangles_.size(); }
 
