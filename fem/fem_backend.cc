@@ -8,6 +8,7 @@
 #include "fem/membrane_kernel.h"
 #include "fem/nodal_contact.h"
 #include "fem/petsc_linear_solver.h"
+#include "fem/traction_recovery.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
@@ -135,6 +136,18 @@ void constrain_directions(const DofTriple& dofs, std::vector<Vec3> directions,
   }
 }
 
+// Points per direction of the simplex Gauss rule for each element degree. Degree 1: one point
+// integrates the constant strain of a linear triangle exactly (the mass-spring element).
+// Degree 2: 7 points, exact to polynomial degree 5, so that the membrane energy (C quadratic
+// in the linear gradients, S(C) smooth) does not lose the element's h^4; the traction
+// recovery's mass matrix (products of linear hats times the area ratio) uses it too.
+unsigned int gauss_points_1d(int element_degree) {
+  if (element_degree == 1) return 1;
+  if (element_degree == 2) return 3;
+  throw std::invalid_argument("fem backend: Element degree must be 1 or 2, not " +
+                              std::to_string(element_degree));
+}
+
 std::string format_list(const std::vector<double>& values) {
   std::ostringstream out;
   out.precision(2);
@@ -164,11 +177,20 @@ class FemBackend::Implementation {
 
  private:
   void build_mesh();
+  // The contact nodes (welded vertices, then for degree 2 the welded edges' midpoints), the
+  // DoFs of each of their copies, and each cell's corners.
+  void build_nodes();
+  // Penalty stiffness k w_k of each node from positive nodal rest areas w_k (see the body).
+  void build_penalties();
   // Shape-function gradients in grain axes and JxW at every quadrature point of every cell:
   // they live on the reference (pattern) configuration, so they are computed once.
   void build_cell_quadrature();
   void build_constraints_and_matrix();
   Vec3 vertex_position(const dealii::Vector<double>& x, int unwelded) const;
+  Vec3 node_position(const dealii::Vector<double>& x, int node) const;
+  // Writes p into every copy of the node (seams keep copies equal).
+  void set_node_position(dealii::Vector<double>& x, int node, const Vec3& p) const;
+  int n_nodes() const { return static_cast<int>(node_copies_.size()); }
   // Node-major energy gradient (and Hessian) of one cell, from the DoF values x.
   void cell_kernel(unsigned int cell, const dealii::Vector<double>& x, Eigen::VectorXd& gradient,
                    Eigen::MatrixXd* hessian) const;
@@ -185,6 +207,8 @@ class FemBackend::Implementation {
   // Solves (K + mu I) dx = -R with the tangent at x_ re-assembled; mu in N/m.
   int solve_shifted(const LoadStep& step, double shift_N_per_m, std::string& notes);
   void update_state();
+  // Degree 2: each welded vertex reads the traction recovered on the curved surface.
+  void update_state_from_recovered_traction();
   [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N) const;
 
   Problem problem_;
@@ -212,6 +236,18 @@ class FemBackend::Implementation {
   std::vector<char> cell_owned_;
   // DoF -> row 3 w + c of the welded vertex w it carries (component c); -1 off vertices.
   std::vector<int> dof_vertex_row_;
+  // Contact nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
+  // n_vertices + e. Per node, the DoFs of each copy (one per panel it lies in); the first
+  // carries it, the others follow it (seam constraints).
+  std::vector<std::vector<DofTriple>> node_copies_;
+  std::vector<std::array<int, 2>> edge_ends_;      // welded edge -> its two welded vertices
+  std::map<std::array<int, 2>, int> edge_index_;   // sorted welded vertex pair -> welded edge
+  std::vector<char> node_held_;                    // held ends: the node keeps its axial place
+  std::vector<std::array<int, 3>> cell_vertices_;  // per cell, its corners' welded vertices
+  // The linear hat of each cell corner at the quadrature points [q][v], and per cell the ratio
+  // of grain to layout area (quadrature weights are layout areas).
+  std::vector<std::vector<double>> hat_values_;
+  std::vector<double> cell_grain_area_ratio_;
 
   dealii::AffineConstraints<double> constraints_;
   dealii::PETScWrappers::MPI::SparseMatrix tangent_;
@@ -219,8 +255,8 @@ class FemBackend::Implementation {
   std::unique_ptr<PetscLinearSolver> linear_solver_;
   dealii::Vector<double> x_;  // every DoF on every rank: the current positions, m
 
-  std::vector<double> penalty_N_per_m_;  // k A0 per welded vertex
-  std::vector<double> multiplier_N_;     // augmented-Lagrangian estimate per welded vertex
+  std::vector<double> penalty_N_per_m_;  // k w per node (w its positive nodal rest area)
+  std::vector<double> multiplier_N_;     // augmented-Lagrangian estimate per node
   double mean_edge_m_ = 0.0;
   double force_scale_N_ = 0.0;
   double normal_step_m_ = 0.0;
@@ -244,7 +280,7 @@ FemBackend::Implementation::Implementation(const Problem& problem, const FemPara
       triangulation_(MPI_COMM_WORLD),
       fe_(dealii::FE_SimplexP<2>(parameters.element_degree), 3),
       mapping_(dealii::FE_SimplexP<2>(1)),
-      quadrature_(parameters.element_degree),
+      quadrature_(gauss_points_1d(parameters.element_degree)),
       dof_handler_(triangulation_) {
   if (!problem.mesh || !problem.law || !problem.body)
     throw std::invalid_argument("fem backend: the problem needs a mesh, a law and a body");
@@ -269,24 +305,19 @@ FemBackend::Implementation::Implementation(const Problem& problem, const FemPara
   dof_vertex_row_.assign(dof_handler_.n_dofs(), -1);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
     for (int c = 0; c < 3; ++c) dof_vertex_row_[vertex_dofs_[u][c]] = 3 * mesh.welded_index[u] + c;
+  build_nodes();
   build_cell_quadrature();
   linear_solver_ = std::make_unique<PetscLinearSolver>(parameters.linear_solver,
                                                        parameters.max_linear_iterations, comm_);
 
-  // Penalty k = beta Y / h^2 (Pa/m) times the barycentric rest area of each vertex.
   double edge_sum = 0.0;
   for (const auto& r : mesh.rest_triangles)
     edge_sum += (r[1] - r[0]).norm() + (r[2] - r[1]).norm() + (r[0] - r[2]).norm();
   mean_edge_m_ = edge_sum / (3.0 * mesh.rest_triangles.size());
   force_scale_N_ = problem.law->stiffness_scale() * mean_edge_m_;
   normal_step_m_ = 1e-6 * mean_edge_m_;
-  const double k_Pa_per_m =
-      parameters.penalty_factor * problem.law->stiffness_scale() / (mean_edge_m_ * mean_edge_m_);
-  const std::vector<double> areas = rest_triangle_areas(mesh);
-  penalty_N_per_m_.assign(mesh.n_vertices, 0.0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) penalty_N_per_m_[mesh.triangles[t][k]] += k_Pa_per_m * areas[t] / 3;
-  multiplier_N_.assign(mesh.n_vertices, 0.0);
+  build_penalties();
+  multiplier_N_.assign(n_nodes(), 0.0);
 
   // Start flat in the layout plane until the caller places the garment.
   std::vector<Vec3> flat(mesh.n_vertices);
@@ -337,29 +368,129 @@ void FemBackend::Implementation::build_mesh() {
   }
 }
 
+void FemBackend::Implementation::build_nodes() {
+  const SimulationMesh& mesh = *problem_.mesh;
+  node_copies_.assign(mesh.n_vertices, {});
+  for (int w = 0; w < mesh.n_vertices; ++w) node_copies_[w].push_back(vertex_dofs_[master_[w]]);
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
+    if (master_[mesh.welded_index[u]] != u)
+      node_copies_[mesh.welded_index[u]].push_back(vertex_dofs_[u]);
+
+  // Each element node's cell corners, from the barycentric coordinates of its support point
+  // on the reference triangle (corners (0,0), (1,0), (0,1)): one corner for a vertex node,
+  // two for an edge midpoint.
+  const dealii::FiniteElement<2>& base = fe_.base_element(0);
+  const unsigned int n_element_nodes = base.n_dofs_per_cell();
+  std::vector<std::vector<unsigned int>> corners(n_element_nodes);
+  for (unsigned int a = 0; a < n_element_nodes; ++a) {
+    const dealii::Point<2> p = base.get_unit_support_points()[a];
+    const std::array<double, 3> barycentric{1.0 - p[0] - p[1], p[0], p[1]};
+    for (unsigned int v = 0; v < 3; ++v)
+      if (barycentric[v] > 1e-12) corners[a].push_back(v);
+    if (corners[a].size() > 2)
+      throw std::logic_error("fem backend: an element node inside the cell is not supported");
+  }
+
+  // A midpoint's copies are the distinct DoF triples of the panel edges over one welded edge:
+  // the same edge seen from its two cells in one panel shares its DoFs; a seam edge has a copy
+  // in each panel.
+  const unsigned int n_local = fe_.n_dofs_per_cell();
+  std::vector<global_dof_index> dofs(n_local);
+  std::vector<DofTriple> triples(n_element_nodes);
+  std::vector<std::vector<DofTriple>> midpoint_copies;
+  cell_vertices_.assign(triangulation_.n_active_cells(), {});
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n_local; ++i)
+      triples[local_node_[i]][local_component_[i]] = dofs[i];
+    for (unsigned int v = 0; v < 3; ++v)
+      cell_vertices_[cell->active_cell_index()][v] = mesh.welded_index[cell->vertex_index(v)];
+    for (unsigned int a = 0; a < n_element_nodes; ++a) {
+      if (corners[a].size() == 1) continue;
+      std::array<int, 2> ends{};
+      for (std::size_t k = 0; k < 2; ++k)
+        ends[k] = mesh.welded_index[cell->vertex_index(corners[a][k])];
+      std::sort(ends.begin(), ends.end());
+      const auto [it, inserted] = edge_index_.emplace(ends, static_cast<int>(edge_ends_.size()));
+      if (inserted) {
+        edge_ends_.push_back(ends);
+        midpoint_copies.emplace_back();
+      }
+      std::vector<DofTriple>& copies = midpoint_copies[it->second];
+      if (std::find(copies.begin(), copies.end(), triples[a]) == copies.end())
+        copies.push_back(triples[a]);
+    }
+  }
+  for (auto& copies : midpoint_copies) node_copies_.push_back(std::move(copies));
+
+  // Held ends hold the end rows' vertices and the midpoints of the edges between them.
+  node_held_.assign(n_nodes(), 0);
+  if (problem_.end_condition == EndCondition::held_ends) {
+    for (int w : problem_.held_vertices) node_held_[w] = 1;
+    for (std::size_t e = 0; e < edge_ends_.size(); ++e)
+      if (node_held_[edge_ends_[e][0]] && node_held_[edge_ends_[e][1]])
+        node_held_[mesh.n_vertices + e] = 1;
+  }
+}
+
+// Nodal contact acts at every node with the penalty k w_k, k = beta Y / h^2 (Pa/m) and w_k a
+// positive rest area per node. Linear triangles: the barycentric third of each triangle (their
+// lumped mass). Quadratic triangles: their lumped (row-sum) mass gives the corners zero area,
+// which would leave them without contact, so each triangle is split at its edge midpoints into
+// four linear triangles of area A/4 whose lumped masses give A/12 to each corner and A/4 to
+// each midpoint (3 x A/12 + 3 x A/4 = A). These weights only set the penalty, which the
+// augmented-Lagrangian updates remove from the converged state.
+void FemBackend::Implementation::build_penalties() {
+  const SimulationMesh& mesh = *problem_.mesh;
+  const double k_Pa_per_m =
+      parameters_.penalty_factor * problem_.law->stiffness_scale() / (mean_edge_m_ * mean_edge_m_);
+  const bool quadratic = parameters_.element_degree == 2;
+  const std::vector<double> areas = rest_triangle_areas(mesh);
+  penalty_N_per_m_.assign(n_nodes(), 0.0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& v = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      penalty_N_per_m_[v[k]] += k_Pa_per_m * areas[t] / (quadratic ? 12.0 : 3.0);
+      if (!quadratic) continue;
+      std::array<int, 2> ends{v[k], v[(k + 1) % 3]};
+      std::sort(ends.begin(), ends.end());
+      penalty_N_per_m_[mesh.n_vertices + edge_index_.at(ends)] += k_Pa_per_m * areas[t] / 4.0;
+    }
+  }
+}
+
 void FemBackend::Implementation::build_cell_quadrature() {
   dealii::FEValues<2> fe_values(mapping_, fe_, quadrature_,
                                 dealii::update_gradients | dealii::update_JxW_values);
   const unsigned int n_cells = triangulation_.n_active_cells();
   const unsigned int n_local = fe_.n_dofs_per_cell();
-  const unsigned int n_nodes = n_local / 3;
+  const unsigned int n_element_nodes = n_local / 3;
   cell_dofs_.assign(n_cells, std::vector<global_dof_index>(n_local));
   cell_JxW_m2_.assign(n_cells, {});
   cell_grad_grain_.assign(n_cells, {});
   cell_owned_.assign(n_cells, 0);
+  cell_grain_area_ratio_.assign(n_cells, 1.0);
+  // Linear hats: the barycentric coordinates of the point on the reference triangle.
+  hat_values_.clear();
+  for (unsigned int q = 0; q < quadrature_.size(); ++q) {
+    const dealii::Point<2> p = quadrature_.point(q);
+    hat_values_.push_back({1.0 - p[0] - p[1], p[0], p[1]});
+  }
   for (const auto& cell : dof_handler_.active_cell_iterators()) {
     const unsigned int c = cell->active_cell_index();
     fe_values.reinit(cell);
     cell->get_dof_indices(cell_dofs_[c]);
     cell_owned_[c] = cell->is_locally_owned();
     const Mat2& G = to_grain_gradient_[c];
-    cell_grad_grain_[c].resize(quadrature_.size() * n_nodes);
+    // grad_grain = G grad_layout with G = J^-T: grain area / layout area = |det J| = 1/|det G|.
+    cell_grain_area_ratio_[c] = 1.0 / std::abs(G.determinant());
+    cell_grad_grain_[c].resize(quadrature_.size() * n_element_nodes);
     for (unsigned int q = 0; q < quadrature_.size(); ++q) {
       cell_JxW_m2_[c].push_back(fe_values.JxW(q));
       for (unsigned int i = 0; i < n_local; ++i) {
         if (local_component_[i] != 0) continue;
         const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
-        cell_grad_grain_[c][q * n_nodes + local_node_[i]] = G * Vec2(g[0], g[1]);
+        cell_grad_grain_[c][q * n_element_nodes + local_node_[i]] = G * Vec2(g[0], g[1]);
       }
     }
   }
@@ -375,10 +506,13 @@ void FemBackend::Implementation::set_positions(const std::vector<Vec3>& position
 
 dealii::Vector<double> FemBackend::Implementation::dof_positions(
     const std::vector<Vec3>& positions_m) const {
+  const int n_vertices = problem_.mesh->n_vertices;
   dealii::Vector<double> x(dof_handler_.n_dofs());
-  for (int u = 0; u < problem_.mesh->n_unwelded_vertices(); ++u)
-    for (int c = 0; c < 3; ++c)
-      x[vertex_dofs_[u][c]] = positions_m[problem_.mesh->welded_index[u]][c];
+  for (int w = 0; w < n_vertices; ++w) set_node_position(x, w, positions_m[w]);
+  // Midpoints start on their chords; the contact predictor lifts those inside the body.
+  for (std::size_t e = 0; e < edge_ends_.size(); ++e)
+    set_node_position(x, n_vertices + static_cast<int>(e),
+                      0.5 * (positions_m[edge_ends_[e][0]] + positions_m[edge_ends_[e][1]]));
   return x;
 }
 
@@ -388,26 +522,33 @@ Vec3 FemBackend::Implementation::vertex_position(const dealii::Vector<double>& x
   return Vec3(x[d[0]], x[d[1]], x[d[2]]);
 }
 
+Vec3 FemBackend::Implementation::node_position(const dealii::Vector<double>& x, int node) const {
+  const DofTriple& d = node_copies_[node].front();
+  return Vec3(x[d[0]], x[d[1]], x[d[2]]);
+}
+
+void FemBackend::Implementation::set_node_position(dealii::Vector<double>& x, int node,
+                                                   const Vec3& p) const {
+  for (const DofTriple& d : node_copies_[node])
+    for (int c = 0; c < 3; ++c) x[d[c]] = p[c];
+}
+
 void FemBackend::Implementation::build_constraints_and_matrix() {
   const SimulationMesh& mesh = *problem_.mesh;
   constraints_.clear();
-  // Seams: every copy of a welded vertex follows the copy that carries it.
-  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
-    const int m = master_[mesh.welded_index[u]];
-    if (m == u) continue;
-    for (int c = 0; c < 3; ++c) {
-      constraints_.add_line(vertex_dofs_[u][c]);
-      constraints_.add_entry(vertex_dofs_[u][c], vertex_dofs_[m][c], 1.0);
-    }
-  }
-  // Held ends: the end vertices keep their coordinate along held_direction.
-  std::vector<char> held(mesh.n_vertices, 0);
-  if (problem_.end_condition == EndCondition::held_ends)
-    for (int w : problem_.held_vertices) {
-      held[w] = 1;
-      constrain_directions(vertex_dofs_[master_[w]], {problem_.held_direction.normalized()},
+  // Seams: every copy of a node (a welded vertex, or the midpoint of a seam edge) follows
+  // the copy that carries it.
+  for (const std::vector<DofTriple>& copies : node_copies_)
+    for (std::size_t k = 1; k < copies.size(); ++k)
+      for (int c = 0; c < 3; ++c) {
+        constraints_.add_line(copies[k][c]);
+        constraints_.add_entry(copies[k][c], copies[0][c], 1.0);
+      }
+  // Held ends: the end nodes keep their coordinate along held_direction.
+  for (int node = 0; node < n_nodes(); ++node)
+    if (node_held_[node])
+      constrain_directions(node_copies_[node].front(), {problem_.held_direction.normalized()},
                            constraints_);
-    }
   // A frictionless cylinder leaves the tube free to turn about its axis and (with free ends)
   // to slide along it. One vertex near mid-height is pinned against both motions; its reaction
   // vanishes at equilibrium (no body force acts along either motion), so no pressure changes.
@@ -424,7 +565,7 @@ void FemBackend::Implementation::build_constraints_and_matrix() {
       const Vec3 r = vertex_position(x_, master_[w]) - origin;
       const double radial = (r - r.dot(axis) * axis).norm();
       const double distance = std::abs(r.dot(axis) - mean_axial);
-      if (!held[w] && radial > 1e-12 && distance < best - 1e-12) {
+      if (!node_held_[w] && radial > 1e-12 && distance < best - 1e-12) {
         best = distance;
         pinned = w;
       }
@@ -457,13 +598,14 @@ void FemBackend::Implementation::cell_kernel(unsigned int cell, const dealii::Ve
                                              Eigen::VectorXd& gradient,
                                              Eigen::MatrixXd* hessian) const {
   const unsigned int n_local = fe_.n_dofs_per_cell();
-  const unsigned int n_nodes = n_local / 3;
+  const unsigned int n_element_nodes = n_local / 3;
   const std::vector<global_dof_index>& dofs = cell_dofs_[cell];
   gradient.setZero(n_local);
   if (hessian) hessian->setZero(n_local, n_local);
-  std::vector<Vec2> grad_grain(n_nodes);
+  std::vector<Vec2> grad_grain(n_element_nodes);
   for (unsigned int q = 0; q < cell_JxW_m2_[cell].size(); ++q) {
-    std::copy_n(cell_grad_grain_[cell].begin() + q * n_nodes, n_nodes, grad_grain.begin());
+    std::copy_n(cell_grad_grain_[cell].begin() + q * n_element_nodes, n_element_nodes,
+                grad_grain.begin());
     // F = dx/dX_grain = sum_a x_a grad_N_a^T (architecture.md: the membrane's 3x2 gradient).
     Mat32 F = Mat32::Zero();
     for (unsigned int i = 0; i < n_local; ++i)
@@ -497,16 +639,17 @@ void FemBackend::Implementation::assemble(const dealii::Vector<double>& x, bool 
       constraints_.distribute_local_to_global(cell_rhs, cell_dofs_[cell], rhs_);
   }
 
-  // Contact at the vertices, each on the rank that owns its DoFs.
+  // Contact at the nodes (vertices, and midpoints for degree 2: without them the quadratic
+  // edges would sink into the body as straight chords), each on the rank that owns its DoFs.
   dealii::FullMatrix<double> vertex_matrix(3, 3);
   dealii::Vector<double> vertex_rhs(3);
   std::vector<global_dof_index> vertex_dof_list(3);
-  for (int w = 0; w < problem_.mesh->n_vertices; ++w) {
-    const DofTriple& d = vertex_dofs_[master_[w]];
+  for (int node = 0; node < n_nodes(); ++node) {
+    const DofTriple& d = node_copies_[node].front();
     if (!owned_dofs_.is_element(d[0])) continue;
     const NodalContact c =
-        nodal_contact(*problem_.body, vertex_position(x, master_[w]), multiplier_N_[w],
-                      penalty_N_per_m_[w], with_tangent ? normal_step_m_ : 0.0);
+        nodal_contact(*problem_.body, node_position(x, node), multiplier_N_[node],
+                      penalty_N_per_m_[node], with_tangent ? normal_step_m_ : 0.0);
     if (c.multiplier_N <= 0.0 && parameters_.tangent_shift_N_per_m <= 0.0) continue;
     for (int i = 0; i < 3; ++i) {
       vertex_dof_list[i] = d[i];
@@ -598,12 +741,24 @@ int FemBackend::Implementation::newton(const LoadStep& step, std::vector<int>& k
       // singular at the solution (a tube touching the body at zero tension).
       const double shift_N_per_m =
           std::max(shift_N_per_m_, parameters_.residual_shift_factor * residual_N / mean_edge_m_);
-      if (escalation == 0) {
-        // The tangent and residual at x_ are assembled: shift in place (same pattern).
-        if (shift_N_per_m > 0.0) MatShift(tangent_.petsc_matrix(), shift_N_per_m);
-        krylov_iterations.push_back(solve_linear_system(step, notes));
-      } else {
-        krylov_iterations.push_back(solve_shifted(step, shift_N_per_m, notes));
+      try {
+        if (escalation == 0) {
+          // The tangent and residual at x_ are assembled: shift in place (same pattern).
+          if (shift_N_per_m > 0.0) MatShift(tangent_.petsc_matrix(), shift_N_per_m);
+          krylov_iterations.push_back(solve_linear_system(step, notes));
+        } else {
+          krylov_iterations.push_back(solve_shifted(step, shift_N_per_m, notes));
+        }
+      } catch (const SolverError&) {
+        // A singular tangent the residual's shift is too small to lift (a loose, stress-free
+        // garment whose midpoint nodes have no stiffness across it): shift as after a failed
+        // line search.
+        if (escalation >= 8) throw;
+        linear_solver_->reset();  // a failed factorization is not reused
+        shift_N_per_m_ =
+            shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m;
+        ++n_shifted_solves_;
+        continue;
       }
       const dealii::Vector<double> increment = gather_increment();
       // A step longer than half an edge leaves the region where the linearisation holds (and
@@ -664,31 +819,19 @@ int FemBackend::Implementation::solve_shifted(const LoadStep& step, double shift
   return solve_linear_system(step, notes);
 }
 
-// Vertices the body has grown into, and those predicted in contact, start from their closest
-// point on its surface: the predictor of a growing body, keeping held vertices on their planes.
+// Nodes the body has grown into, and those predicted in contact, start from their closest
+// point on its surface: the predictor of a growing body, keeping held nodes on their planes.
 void FemBackend::Implementation::contact_predictor() {
-  const SimulationMesh& mesh = *problem_.mesh;
-  std::vector<char> held(mesh.n_vertices, 0);
-  if (problem_.end_condition == EndCondition::held_ends)
-    for (int w : problem_.held_vertices) held[w] = 1;
   const Vec3 d = problem_.held_direction.normalized();
-  std::vector<Vec3> moved(mesh.n_vertices);
-  std::vector<char> move(mesh.n_vertices, 0);
-  for (int w = 0; w < mesh.n_vertices; ++w) {
-    const Vec3 x = vertex_position(x_, master_[w]);
+  for (int node = 0; node < n_nodes(); ++node) {
+    const Vec3 x = node_position(x_, node);
     const SurfacePoint s = problem_.body->query(x);
-    // Vertices in contact at the last step (the multiplier predicted positive) go onto the
+    // Nodes in contact at the last step (the multiplier predicted positive) go onto the
     // surface too: a penetration or gap left by the secant would cost kA g of residual.
-    if (s.signed_distance_m >= 0.0 && multiplier_N_[w] <= 0.0) continue;
+    if (s.signed_distance_m >= 0.0 && multiplier_N_[node] <= 0.0) continue;
     Vec3 target = s.closest_point_m;
-    if (held[w]) target -= (target - x).dot(d) * d;
-    moved[w] = target;
-    move[w] = 1;
-  }
-  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
-    const int w = mesh.welded_index[u];
-    if (move[w])
-      for (int c = 0; c < 3; ++c) x_[vertex_dofs_[u][c]] = moved[w][c];
+    if (node_held_[node]) target -= (target - x).dot(d) * d;
+    set_node_position(x_, node, target);
   }
 }
 
@@ -715,10 +858,10 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
     // Uzawa's update: the multiplier becomes the contact force just found (nodal_contact.h).
     max_penetration_m_ = 0.0;
     n_active = 0;
-    for (int w = 0; w < problem_.mesh->n_vertices; ++w) {
-      const NodalContact c = nodal_contact(*problem_.body, vertex_position(x_, master_[w]),
-                                           multiplier_N_[w], penalty_N_per_m_[w], 0.0);
-      multiplier_N_[w] = c.multiplier_N;
+    for (int node = 0; node < n_nodes(); ++node) {
+      const NodalContact c = nodal_contact(*problem_.body, node_position(x_, node),
+                                           multiplier_N_[node], penalty_N_per_m_[node], 0.0);
+      multiplier_N_[node] = c.multiplier_N;
       if (c.multiplier_N > 0.0) {
         ++n_active;
         max_penetration_m_ = std::max(max_penetration_m_, std::abs(c.gap_m));
@@ -762,6 +905,9 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   if (!solver_notes.empty()) detail << " [" << solver_notes << "]";
   if (n_shifted_solves_ > 0) detail << "; " << n_shifted_solves_ << " shifted tangents";
   detail << "; max gap " << max_penetration_m_ << " m; " << n_active << " in contact";
+  if (parameters_.element_degree != 1)
+    detail << "; vertex forces are the recovered traction (degree " << parameters_.element_degree
+           << ")";
   report.detail = detail.str();
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -792,6 +938,10 @@ void FemBackend::Implementation::update_state() {
   const int n = mesh.n_vertices;
   state_.positions_m.resize(n);
   for (int w = 0; w < n; ++w) state_.positions_m[w] = vertex_position(x_, master_[w]);
+  if (parameters_.element_degree != 1) {
+    update_state_from_recovered_traction();
+    return;
+  }
   state_.internal_force_N = internal_force_N(x_);
   state_.contact_force_N.assign(n, Vec3::Zero());
   state_.in_contact.assign(n, 0);
@@ -809,9 +959,78 @@ void FemBackend::Implementation::update_state() {
   }
 }
 
+// Quadratic elements carry a consistent load int N_k p dA at each node: about nothing at the
+// corners and A/3 at the midpoints under a uniform pressure, so their nodal forces over
+// vertex areas do not read a pressure. Worse, the corners' share is of either sign and
+// contact cannot pull: on a cylinder the corners float a little off the body (by about h^4)
+// and only the midpoints press. The traction is therefore recovered in the linear functions
+// on the current (curved) surface, whose loads the nodal forces determine: the hat of vertex w is
+// phi_w = N_w + 1/2 sum_e N_e over its edges e (a quadratic function), so int phi_w t dA = f_w +
+// 1/2 sum_e f_e, and the L2 projection M t = f of traction_recovery.h (M_vw = int phi_v phi_w dA)
+// returns the vertex tractions; it shares each midpoint's force between its edge's ends. Each
+// welded vertex is then handed the force the shared extractor turns back into it:
+//   internal_force_N = -(t A_v) n_v,  contact_force_N = t A_v n_body,
+// with A_v the flat barycentric area and n_v the vertex normal the extractor computes (oriented
+// away from the body), so that p_v = -(f . n_v) / A_v = t exactly, and a uniform pressure reads
+// its value at every vertex.
+void FemBackend::Implementation::update_state_from_recovered_traction() {
+  const SimulationMesh& mesh = *problem_.mesh;
+  const int n = mesh.n_vertices;
+  SurfaceQuadrature quadrature;
+  quadrature.shape_values = hat_values_;
+  for (const auto& v : cell_vertices_) quadrature.cell_nodes.emplace_back(v.begin(), v.end());
+  quadrature.point_area_m2.assign(cell_dofs_.size(), {});
+  const unsigned int n_local = fe_.n_dofs_per_cell();
+  const unsigned int n_element_nodes = n_local / 3;
+  for (unsigned int cell = 0; cell < cell_dofs_.size(); ++cell)
+    for (unsigned int q = 0; q < cell_JxW_m2_[cell].size(); ++q) {
+      // dA = |x,1 x x,2| dA_grain, x,i the columns of F = dx/dX_grain.
+      Mat32 F = Mat32::Zero();
+      for (unsigned int i = 0; i < n_local; ++i)
+        F.row(local_component_[i]) +=
+            x_[cell_dofs_[cell][i]] *
+            cell_grad_grain_[cell][q * n_element_nodes + local_node_[i]].transpose();
+      const double grain_area_m2 = cell_JxW_m2_[cell][q] * cell_grain_area_ratio_[cell];
+      quadrature.point_area_m2[cell].push_back(Vec3(F.col(0)).cross(Vec3(F.col(1))).norm() *
+                                               grain_area_m2);
+    }
+  std::vector<double> hat_load_N(n, 0.0);
+  for (int w = 0; w < n; ++w) hat_load_N[w] = std::max(0.0, multiplier_N_[w]);
+  for (std::size_t e = 0; e < edge_ends_.size(); ++e)
+    for (int w : edge_ends_[e]) hat_load_N[w] += 0.5 * std::max(0.0, multiplier_N_[n + e]);
+  const std::vector<double> traction = recover_traction_Pa(n, quadrature, hat_load_N);
+
+  // A vertex touches the body where its own node or a midpoint of one of its edges does.
+  std::vector<char> touching(n, 0);
+  for (int w = 0; w < n; ++w) touching[w] = multiplier_N_[w] > 0.0;
+  for (std::size_t e = 0; e < edge_ends_.size(); ++e)
+    if (multiplier_N_[n + e] > 0.0) touching[edge_ends_[e][0]] = touching[edge_ends_[e][1]] = 1;
+
+  const std::vector<double> area =
+      vertex_areas(mesh.triangles, state_.positions_m, n, VertexAreaDefinition::barycentric);
+  const std::vector<Vec3> normal = vertex_normals(mesh.triangles, state_.positions_m, n);
+  state_.internal_force_N.assign(n, Vec3::Zero());
+  state_.contact_force_N.assign(n, Vec3::Zero());
+  state_.in_contact.assign(n, 0);
+  state_.gap_m.assign(n, 0.0);
+  traction_Pa_.assign(n, 0.0);
+  for (int w = 0; w < n; ++w) {
+    const SurfacePoint s = problem_.body->query(state_.positions_m[w]);
+    state_.gap_m[w] = s.signed_distance_m;
+    if (!touching[w]) continue;
+    const Vec3 n_v = normal[w].dot(s.outward_normal) < 0.0 ? Vec3(-normal[w]) : normal[w];
+    state_.in_contact[w] = 1;
+    traction_Pa_[w] = traction[w];
+    state_.internal_force_N[w] = -(traction[w] * area[w]) * n_v;
+    state_.contact_force_N[w] = traction[w] * area[w] * s.outward_normal;
+  }
+}
+
 void FemBackend::Implementation::linearise(const std::vector<Vec3>& positions_m,
                                            Eigen::VectorXd& residual_N,
                                            Eigen::MatrixXd& tangent_N_per_m) const {
+  if (parameters_.element_degree != 1)
+    throw std::logic_error("fem backend: linearise() is defined for linear elements only");
   const SimulationMesh& mesh = *problem_.mesh;
   const int n = mesh.n_vertices;
   const dealii::Vector<double> x = dof_positions(positions_m);

@@ -2,6 +2,19 @@
 // domain, the unknown is the 3D position field, seams are constraints, contact is
 // augmented-Lagrangian through contact/, and each load step is solved by Newton's method.
 // deal.II stays behind the pointer to the implementation: this header is light.
+//
+// Element degree 2 (quadratic triangles) has a node at every edge midpoint besides the
+// vertices: seams identify midpoints pairwise as they identify vertices, held ends hold the
+// midpoints of the end rows' edges, and contact acts at every node. What the shared extractor
+// reads then differs from degree 1. There, SurfaceState::internal_force_N is the membrane's
+// own nodal force. For degree 2 it is not: the nodal forces of quadratic triangles are
+// consistent loads (about zero at the corners under a uniform pressure), so the contact
+// traction t is recovered on the curved surface by solving the surface mass-matrix system
+// M t = f for the nodal contact forces f (traction_recovery.h), and each welded vertex gets
+//   internal_force_N = -(t A_v) n_v,
+// A_v its flat barycentric area and n_v the extractor's vertex normal: the extractor's
+// pressure at the vertex is t, its mean is exact under a uniform pressure, and
+// contact_traction_Pa() equals it. StepReport::detail says so.
 #pragma once
 
 #include "core/backend.h"
@@ -29,20 +42,24 @@ class FemBackend final : public Backend {
   // contact_traction_Pa() as "contact_traction_Pa", beside the extractor's pressure_Pa.
   std::vector<std::pair<std::string, std::vector<double>>> extra_point_data() const override;
 
-  // Contact traction at each welded vertex, Pa: the contact multiplier over the vertex's
-  // current barycentric area (zero off contact). Written beside the extractor's pressure.
+  // Contact traction at each welded vertex, Pa (zero off contact), written beside the
+  // extractor's pressure. Degree 1: the contact multiplier over the vertex's current
+  // barycentric area. Degree 2: the traction recovered on the curved surface.
   std::vector<double> contact_traction_Pa() const;
   // Largest penetration of a vertex in contact after the last step, m.
   double max_penetration_m() const;
   // Residual-force history (largest component, N) of every Newton iteration of the last step.
   const std::vector<double>& last_residual_history_N() const;
 
-  // For tests, serial only: the residual R = dPi/dx - f_contact (N) on the welded vertices and
-  // its derivative dR/dx (N/m, 3n x 3n, node-major) at `positions_m`, with the current
-  // contact multipliers and without pins or held ends.
+  // For tests, serial and degree 1 only (std::logic_error otherwise): the residual
+  // R = dPi/dx - f_contact (N) on the welded vertices and its derivative dR/dx (N/m, 3n x 3n,
+  // node-major) at `positions_m`, with the current contact multipliers and without pins or
+  // held ends.
   void linearise(const std::vector<Vec3>& positions_m, Eigen::VectorXd& residual_N,
                  Eigen::MatrixXd& tangent_N_per_m) const;
-  // The membrane's internal force (minus the energy gradient) on each welded vertex, N.
+  // The membrane's internal force (minus the energy gradient) on each welded vertex, N. With
+  // degree 2 the edge midpoints sit on the chords between the given vertices, and their own
+  // forces are left out.
   std::vector<Vec3> internal_force_N(const std::vector<Vec3>& positions_m) const;
 
  private:

@@ -29,10 +29,13 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Selection;
   const FemParameters d;
   prm.enter_subsection(subsection_name);
-  prm.declare_entry("Element degree", std::to_string(d.element_degree), Integer(1, 1),
+  prm.declare_entry("Element degree", std::to_string(d.element_degree), Integer(1, 2),
                     "Polynomial degree of the 3D position field on the pattern's triangles "
                     "(dimensionless). Degree 1 (linear triangles) runs the very mesh of the "
-                    "mass-spring backend and assembles the same membrane forces.");
+                    "mass-spring backend and assembles the same membrane forces. Degree 2 "
+                    "(quadratic triangles, a 7-point rule) adds a node at every edge midpoint, "
+                    "with contact there too; the output stays per vertex, each vertex reading "
+                    "the contact traction recovered on the curved surface.");
   prm.declare_entry("Linear solver", to_string(d.linear_solver),
                     Selection("direct|cg-amg|gmres-amg"),
                     "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (small "

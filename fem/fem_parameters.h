@@ -16,8 +16,9 @@ enum class LinearSolverKind {
 };
 
 struct FemParameters {
-  // Polynomial degree of the position field on triangles. Degree 1 makes the assembled
-  // internal force that of the mass-spring backend's triangle element.
+  // Polynomial degree of the position field on triangles, 1 or 2. Degree 1 makes the assembled
+  // internal force that of the mass-spring backend's triangle element; degree 2 (quadratic
+  // triangles) hands the extractor a recovered traction (fem_backend.h).
   int element_degree = 1;
   LinearSolverKind linear_solver = LinearSolverKind::direct;
   // Krylov stopping rule: residual relative to the right-hand side; the floor of the inexact

@@ -273,3 +273,108 @@ TEST(CylinderKrylov, AmgSolversMatchTheDirectSolve) {
 
 }  // namespace
 }  // namespace tightfit
+
+namespace tightfit {
+namespace {
+
+struct TubeSolve {
+  double error = 0.0;   // |F/A / theory - 1|: total normal force over total area
+  double spread = 0.0;  // std / mean of the extractor's pressure over the contact vertices
+  double contact_fraction = 0.0;
+  double traction_error = 0.0;  // |mean contact traction / theory - 1|
+  double seconds = 0.0;
+  std::string detail;
+};
+
+// Linear Biot, free ends, alpha 1.5 on the 4 5T tube with `per_panel` triangles round each
+// panel (2 per_panel round the hoop) and 4 rows.
+TubeSolve solve_tube(int degree, int per_panel, EndCondition ends = EndCondition::free_ends,
+                     const char* law = "linear biot") {
+  const double alpha = 1.5;
+  TubeCase tube(law, ends, MeshSpacing{0.1878 / per_panel, 0.06});
+  FemParameters parameters;
+  parameters.element_degree = degree;
+  FemBackend backend(tube.problem, parameters);
+  tube.grow_to(alpha);
+  backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
+  const StepReport report = backend.solve({0, alpha, false});
+  const SurfaceState state = backend.state();
+  const double theory = closed_form_pressure_Pa(law, ends, tube.fabric, tube.rest_radius_m, alpha);
+  const PressureSummary p = tube.pressure(state);
+  double traction_mean = 0.0;
+  for (double t : backend.contact_traction_Pa()) traction_mean += t / tube.mesh.n_vertices;
+  TubeSolve s;
+  s.error = std::abs(force_over_area_Pa(tube, state) / theory - 1.0);
+  s.spread = p.std_Pa / p.mean_Pa;
+  s.contact_fraction = p.contact_fraction;
+  s.traction_error = std::abs(traction_mean / theory - 1.0);
+  s.seconds = report.wall_seconds;
+  s.detail = report.detail;
+  EXPECT_TRUE(report.converged);
+  EXPECT_LE(backend.max_penetration_m(), 1e-9);
+  return s;
+}
+
+// Quadratic triangles interpolate the hoop by parabolas through nodes on the circle. The
+// hoop length, hence the hoop strain and the pressure p = T / r, then errs by O(h^4), twice
+// the degree (linear triangles: O(h^2), the inscribed polygon). On the coarsest mesh (12
+// triangles round the hoop) the quadratic error must be far below the linear one, and each
+// halving of the hoop spacing must divide it by about 2^4.
+TEST(CylinderRefinement, QuadraticElementsConvergeAtFourthOrder) {
+  const TubeSolve linear = solve_tube(1, 6);
+  std::printf("degree 1, N = 12: error %.3e, spread %.2e, %.3f s\n", linear.error, linear.spread,
+              linear.seconds);
+  std::vector<double> errors;
+  for (const int per_panel : {6, 12, 24}) {
+    const TubeSolve s = solve_tube(2, per_panel);
+    errors.push_back(s.error);
+    std::printf("degree 2, N = %d: error %.3e, traction error %.3e, spread %.2e, %.3f s | %s\n",
+                2 * per_panel, s.error, s.traction_error, s.spread, s.seconds, s.detail.c_str());
+    EXPECT_EQ(s.contact_fraction, 1.0);
+    EXPECT_LE(s.spread, 0.005);
+    EXPECT_LT(s.traction_error, 2.0 * s.error + 1e-9);
+  }
+  EXPECT_LT(errors[0], 0.05 * linear.error);
+  for (std::size_t i = 1; i < errors.size(); ++i) {
+    const double rate = std::log2(errors[i - 1] / errors[i]);
+    std::printf("degree 2 rate %.2f\n", rate);
+    EXPECT_NEAR(rate, 4.0, 0.5);
+  }
+}
+
+// The six closed forms with quadratic triangles on a coarse tube (24 triangles round the hoop,
+// where linear ones err by about 1%), swept over alpha as a run does: held ends hold the end
+// rows' midpoints too, and every law must land within 1e-3 with a spread under 0.5%.
+TEST(CylinderQuadratic, SixClosedFormsOnACoarseTube) {
+  for (const char* law : {"linear biot", "st venant kirchhoff", "neo hookean"})
+    for (const EndCondition ends : {EndCondition::free_ends, EndCondition::held_ends}) {
+      TubeCase tube(law, ends, MeshSpacing{0.1878 / 12, 0.06});
+      FemParameters parameters;
+      parameters.element_degree = 2;
+      FemBackend backend(tube.problem, parameters);
+      int index = 0;
+      for (const double alpha : {1.2, 1.5, 1.8}) {
+        tube.grow_to(alpha);
+        if (index == 0) backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
+        const StepReport report = backend.solve({index++, alpha, false});
+        const SurfaceState state = backend.state();
+        const PressureSummary p = tube.pressure(state);
+        const double theory =
+            closed_form_pressure_Pa(law, ends, tube.fabric, tube.rest_radius_m, alpha);
+        std::printf(
+            "degree 2, %s, %s ends, alpha %.1f: rel %+.3e, F/A rel %+.3e, spread %.2e, "
+            "%.3f s, %d Newton\n",
+            law, ends == EndCondition::free_ends ? "free" : "held", alpha, p.mean_Pa / theory - 1,
+            force_over_area_Pa(tube, state) / theory - 1, p.std_Pa / p.mean_Pa, report.wall_seconds,
+            report.iterations);
+        EXPECT_EQ(p.contact_fraction, 1.0);
+        EXPECT_NEAR(p.mean_Pa / theory, 1.0, 1e-3) << law << " alpha " << alpha;
+        EXPECT_NEAR(force_over_area_Pa(tube, state) / theory, 1.0, 1e-3);
+        EXPECT_LE(p.std_Pa / p.mean_Pa, 0.005);
+        EXPECT_LE(backend.max_penetration_m(), 1e-9);
+      }
+    }
+}
+
+}  // namespace
+}  // namespace tightfit
