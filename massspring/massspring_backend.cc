@@ -54,10 +54,16 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
     throw std::invalid_argument("mass spring: the held direction is zero");
   held_direction_ =
       problem_.held_vertices.empty() ? Vec3::UnitZ() : Vec3(problem_.held_direction.normalized());
-  // Stop rule (architecture.md): a force relative to the tension scale Y h.
-  tolerance_N_ = parameters_.relative_tolerance * problem_.law->stiffness_scale() *
-                 mean_rest_edge_length_m(mesh);
   size_m_ = std::sqrt(rest_area(mesh));
+  // Stop rule (architecture.md): a force relative to the tension scale, Y h^2 / L (h the mean
+  // rest edge, L = size_m_). A smooth error of strain amplitude e over the garment leaves about
+  // Y e h^2 / L on each vertex (the stress error's gradient Y e / L times the vertex area h^2),
+  // so this bounds the remaining strain error by about the relative tolerance on every mesh.
+  // Y h alone, the force of a strain e on one edge, lets the smooth error grow like L / h as
+  // the mesh is refined (docs/model.md, "Reaching equilibrium").
+  const double edge_m = mean_rest_edge_length_m(mesh);
+  tolerance_N_ = parameters_.relative_tolerance * problem_.law->stiffness_scale() * edge_m *
+                 (edge_m / size_m_);
 
   // Until the caller places it, the garment lies flat in its layout plane.
   x_.assign(n, Vec3::Zero());

@@ -39,8 +39,11 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Relative tolerance", text(d.relative_tolerance), Double(1e-12, 1.0),
                     "Stop rule, dimensionless: a state is stable when the largest residual force "
                     "on any vertex (internal + contact + gravity, held components removed) is "
-                    "below this times the tension scale, the law's stiffness scale (N/m) times "
-                    "the mean rest edge length (m).");
+                    "below this times the tension scale Y h^2 / L: the law's stiffness scale Y "
+                    "(N/m) times the mean rest edge length h (m) squared over the garment's "
+                    "size L (m, the square root of its rest area). That is the force a smooth "
+                    "strain error of this size leaves on a vertex, so the tolerance bounds the "
+                    "strain error on every mesh.");
   prm.declare_entry("Maximum frames", text(d.maximum_frames), Integer(1, 2000000000),
                     "Guard against non-convergence, frames: a load step that has not met the "
                     "stop rule by then fails with an error naming the step and residual.");

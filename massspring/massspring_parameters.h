@@ -33,7 +33,8 @@ struct MassSpringParameters {
   // damped RK4 integration takes over.
   int quasi_static_frames = 30;
   // Stop rule: the largest residual force on a vertex below this times the tension scale
-  // (law stiffness scale x mean rest edge length).
+  // Y h^2 / L (law stiffness scale x mean rest edge length squared / the garment's size, the
+  // square root of its rest area): about the strain error left in the state.
   double relative_tolerance = 1e-4;
   // Guard against non-convergence: a load step that has not met the stop rule after this
   // many frames fails with an error.
