@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -54,7 +55,7 @@ CaseParameters level_parameters(const CaseParameters& base, int level) {
 
 BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_levels,
                                       const NamedBackendFactory& backend,
-                                      const std::string& output_dir, CsvTable& table,
+                                      const std::string& output_dir, CsvTable* table,
                                       std::ostream& log) {
   namespace fs = std::filesystem;
   BackendConvergence study;
@@ -79,8 +80,10 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
       l.run.failure = e.what();
     }
     for (const StepMeasurement& m : l.run.steps)
-      table.write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step, m.alpha,
-                       m.p_mean_Pa(), m.p_theory_Pa, relative(m.p_mean_Pa(), m.p_theory_Pa)});
+      if (table)
+        table->write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step,
+                          m.alpha, m.p_mean_Pa(), m.p_theory_Pa,
+                          relative(m.p_mean_Pa(), m.p_theory_Pa)});
     const bool completed = l.run.completed;
     const std::string failure = l.run.failure;
     study.levels.push_back(std::move(l));
@@ -150,19 +153,25 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
   for (int level = 0; level < n_levels; ++level)
     make_cylinder_setup(level_parameters(parameters, level));
 
-  fs::create_directories(output_dir);
-  CsvTable table((fs::path(output_dir) / "convergence.csv").string(), convergence_columns());
-  CsvTable summary((fs::path(output_dir) / "convergence_summary.csv").string(), summary_columns());
+  // Under MPI every rank runs the study (the FE solves are distributed); the first writes the
+  // tables, as run_cylinder_case does for each level's own.
+  std::optional<CsvTable> table, summary;
+  if (parameters.output.write_files && parameters.output.is_first_rank()) {
+    fs::create_directories(output_dir);
+    table.emplace((fs::path(output_dir) / "convergence.csv").string(), convergence_columns());
+    summary.emplace((fs::path(output_dir) / "convergence_summary.csv").string(), summary_columns());
+  }
   ConvergenceStudy result;
   for (const NamedBackendFactory& backend : backends) {
-    result.backends.push_back(
-        run_backend_levels(parameters, n_levels, backend, output_dir, table, log));
+    result.backends.push_back(run_backend_levels(parameters, n_levels, backend, output_dir,
+                                                 table ? &*table : nullptr, log));
     for (const ConvergenceSummaryRow& r : summarise_convergence(result.backends.back())) {
       const ConvergenceEstimate& e = r.estimate;
-      summary.write_row({r.backend, r.step, r.alpha, e.n_meshes, r.edge_fine_m, r.ratio,
-                         r.p_fine_Pa, r.p_theory_Pa, e.order, e.order_observed ? 1 : 0,
-                         e.extrapolated, e.gci_fine, e.safety_factor, r.rel_error_fine,
-                         r.rel_error_richardson, e.error_order});
+      if (summary)
+        summary->write_row({r.backend, r.step, r.alpha, e.n_meshes, r.edge_fine_m, r.ratio,
+                            r.p_fine_Pa, r.p_theory_Pa, e.order, e.order_observed ? 1 : 0,
+                            e.extrapolated, e.gci_fine, e.safety_factor, r.rel_error_fine,
+                            r.rel_error_richardson, e.error_order});
       result.summary.push_back(r);
     }
   }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The FE backend under MPI, end to end: with 2 ranks the garment of every load step is a .pvtu
-# whose pieces exist (listed in garment.pvd), and pressure.csv holds the serial run's numbers.
+# whose pieces exist (listed in garment.pvd), and pressure.csv holds the serial run's numbers;
+# a convergence study runs under MPI too.
 #   mpi_run_writes_pvtu.sh TIGHTFIT MPIEXEC CASE OUTPUT_DIR
 set -eu
 tightfit=$1 mpiexec=$2 case_file=$3 out=$4
@@ -60,4 +61,19 @@ END { if (FNR != rows) { print "the runs have different numbers of rows"; failed
   { echo "the runs' pressure.csv have different columns"; exit 1; }
 awk "$compare" "$out/serial/pressure.csv" "$parallel/pressure.csv" ||
   { echo "pressure.csv of the 2-rank run differs from the serial one"; exit 1; }
+
+# A convergence study under MPI (every rank runs it, the FE solves distributed): it finishes
+# and convergence.csv holds each backend's levels x steps, every row complete.
+study=$out/convergence
+"$mpiexec" -n 2 "$tightfit" convergence "$case_file" --levels 2 --output "$study" \
+  --set "Garment/Mesh scale=2" --set "Protocol/Final alpha=1.2" \
+  --set "Protocol/Alpha increment=0.2" >"$out/convergence.log" 2>&1 ||
+  { echo "the 2-rank convergence study failed:"; cat "$out/convergence.log"; exit 1; }
+steps=$(($(wc -l <"$study/fem/level_1/pressure.csv") - 1))
+backends=$(ls -d "$study"/*/ | wc -l)
+rows=$(($(wc -l <"$study/convergence.csv") - 1))
+[ "$rows" -eq $((backends * 2 * steps)) ] ||
+  { echo "convergence.csv has $rows rows, not $backends backends x 2 levels x $steps steps"; exit 1; }
+awk -F, 'NR == 1 {n = NF} NF != n {print "convergence.csv line " NR " has " NF " fields"; bad = 1}
+  END {exit bad}' "$study/convergence.csv" || exit 1
 exit 0
