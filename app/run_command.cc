@@ -45,7 +45,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
         },
         dir, out);
     out << "\n" << pressure_summary_table(setup, result);
-    out << "  results in " << dir << "/ (pressure.csv, pressure_theta.csv"
+    out << "  results in " << dir << "/ (pressure.csv, pressure_theta.csv, solver.log"
         << (setup.parameters.output.write_vtu ? ", garment.pvd, body.pvd" : "") << ")\n";
     if (!result.completed) {
       out << "  the run stopped early: " << result.failure << "\n";

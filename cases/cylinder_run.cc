@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 
 namespace tightfit {
@@ -93,6 +94,13 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
   std::unique_ptr<CsvTable> table;
   if (write_tables)
     table = std::make_unique<CsvTable>(path("pressure.csv"), pressure_table_columns());
+  // The solver's own account of each step (Newton residuals and Krylov iterations, RK4
+  // frames and time step), which the progress line only counts.
+  std::ofstream solver_log;
+  if (write_tables) {
+    solver_log.open(path("solver.log"));
+    solver_log << "# " << result.backend << ": the solver's report of each load step\n";
+  }
   std::unique_ptr<PvdWriter> garment_series, body_series;
   if (write_series) {
     garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
@@ -105,10 +113,14 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     } catch (const SolverError& e) {
       result.failure = e.what();
       log << "  stopped: " << e.what() << std::endl;
+      if (solver_log.is_open()) solver_log << "stopped: " << e.what() << std::endl;
       break;
     }
     const StepMeasurement& m = result.steps.back();
     if (table) table->write_row(pressure_row(m));
+    if (solver_log.is_open())
+      solver_log << "step " << m.step << ", alpha " << m.alpha << ": " << m.report.detail
+                 << std::endl;
     if (write_garment) {
       char stem[64];
       std::snprintf(stem, sizeof stem, "garment_%04zu", step);

@@ -22,7 +22,8 @@ struct RunResult {
   std::string failure;  // why the run stopped early, if it did
 };
 
-// Writes into `output_dir` (created if needed): pressure.csv, pressure_theta.csv, and with
+// Writes into `output_dir` (created if needed): pressure.csv, pressure_theta.csv, solver.log
+// (each step's StepReport::detail), and with
 // Output/Write VTU garment_NNNN.vtu, body_NNNN.vtu, garment.pvd, body.pvd. Progress goes to
 // `log`. A backend failure ends the run with completed = false; what was written stays.
 RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_backend,

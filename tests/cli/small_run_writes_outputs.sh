@@ -16,4 +16,7 @@ done
 for f in pressure_theta.csv garment.pvd body.pvd garment_0000.vtu garment_0002.vtu body_0002.vtu; do
   [ -s "$out/$f" ] || { echo "missing $f"; exit 1; }
 done
+# solver.log: one report per load step after its header line.
+[ "$(grep -c '^step [0-9]*, alpha ' "$out/solver.log")" -eq 3 ] ||
+  { echo "solver.log does not report 3 load steps"; exit 1; }
 grep -q "Pressure on the cylinder" "$out.log" || { echo "no summary table on screen"; exit 1; }
