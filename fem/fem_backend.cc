@@ -840,6 +840,10 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   StepReport report;
   report.tolerance_N = parameters_.residual_tolerance * force_scale_N_;
   history_N_.clear();
+  // After a fallback, the solver asked for returns once the garment presses on the body: the
+  // loose garment's tangent (singular at zero tension) is what defeats CG, and the first
+  // contact step, where the tension starts from zero, is left to the solver that got there.
+  if (had_contact_) linear_solver_->restore_requested();
   secant_predictor(step);
   contact_predictor();
   shift_N_per_m_ = 0.0;

@@ -17,7 +17,13 @@ LinearSolverKind next_in_chain(LinearSolverKind kind) {
 }  // namespace
 
 PetscLinearSolver::PetscLinearSolver(LinearSolverKind kind, int max_iterations, MPI_Comm comm)
-    : kind_(kind), max_iterations_(max_iterations), comm_(comm) {}
+    : requested_(kind), kind_(kind), max_iterations_(max_iterations), comm_(comm) {}
+
+void PetscLinearSolver::restore_requested() {
+  if (kind_ == requested_) return;
+  kind_ = requested_;
+  reset();
+}
 
 PetscLinearSolver::~PetscLinearSolver() {
   reset();

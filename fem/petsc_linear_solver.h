@@ -10,7 +10,10 @@
 // Fallback: conjugate gradients need a symmetric positive definite tangent. When CG reports an
 // indefinite matrix or preconditioner, or stops without converging, the system is solved again
 // by GMRES with the same BoomerAMG, and the solver stays with GMRES; when GMRES fails too, by
-// MUMPS. Each switch is recorded in `note` of the result that made it.
+// MUMPS. Each switch is recorded in `note` of the result that made it. restore_requested()
+// returns to the solver asked for: the tangent that defeated CG (a loose garment's, singular
+// at zero tension) does not last once the garment is in contact (FemBackend calls it then).
+
 #pragma once
 
 #include "fem/fem_parameters.h"
@@ -40,12 +43,15 @@ class PetscLinearSolver {
   // Forgets the factorization and preconditioner (call when the matrix's pattern changes).
   void reset();
   LinearSolverKind kind() const { return kind_; }
+  // Back to the solver given to the constructor after a fallback (no-op otherwise).
+  void restore_requested();
 
  private:
   void configure();
   // Returns true when the KSP converged; `iterations` and `reason` describe the attempt.
   bool attempt(Mat A, Vec b, Vec x, int& iterations, std::string& reason);
 
+  LinearSolverKind requested_;
   LinearSolverKind kind_;
   int max_iterations_;
   MPI_Comm comm_;
