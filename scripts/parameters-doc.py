@@ -14,7 +14,7 @@ def allowed(pattern_description):
     text = text.replace("MAX_DOUBLE", "inf").replace("MAX_INT", "inf")
     text = text.replace(" (inclusive)", "").replace("...", " to ")
     if text.startswith("Selection "):
-        return "one of: " + ", ".join(f"`{v}`" for v in text[len("Selection "):].split("|"))
+        return "one of: " + ", ".join(f"`{v.strip()}`" for v in text[len("Selection "):].split("|"))
     return text
 
 

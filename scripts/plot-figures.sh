@@ -9,8 +9,9 @@
 #     cylinder_T_compare/               tightfit compare cases/cylinder_T.prm
 #     cylinder_T_gravity/               the same case with gravity (optional)
 #     cylinder_T_convergence/           tightfit convergence cases/cylinder_T.prm
-#     coarse_fine.csv                   both backends on two meshes (optional; written by
-#                                       validation-report.sh in convergence.csv's columns)
+#     coarse_fine.csv                   both backends on garment 4 5T's coarse and fine meshes
+#                                       (optional; written by validation-report.sh in
+#                                       convergence.csv's columns)
 #   Figure 6 also reads cylinder_T/garment_NNNN.vtu (python3 and gnuplot, no VTK).
 #   FIGURES_DIR  where the PNGs go (default docs/figures)
 set -euo pipefail
@@ -111,5 +112,6 @@ else
 fi
 if has_rows "$results/coarse_fine.csv"; then
   plot fig14_coarse_fine coarse_fine.gp \
-    "csv='$results/coarse_fine.csv'; backends='massspring fem'; name='T'" "$results/coarse_fine.csv"
+    "csv='$results/coarse_fine.csv'; backends='massspring fem'; name='4 5T'" \
+    "$results/coarse_fine.csv"
 fi

@@ -37,10 +37,12 @@ start=$(date +%s)
 run cylinder_T run cases/cylinder_T.prm --output "$results/cylinder_T"
 run cylinder_45T run cases/cylinder_45T.prm --output "$results/cylinder_45T" "${no_vtu[@]}"
 run compare compare cases/cylinder_T.prm --output "$results/cylinder_T_compare" "${no_vtu[@]}"
-# The paper's Figure 14 compared about 575 and 1397 vertices; Mesh scale 0.63 refines the
-# case's mesh by the same ratio of vertex counts (about 2.4).
-run compare_fine compare cases/cylinder_T.prm --output "$results/cylinder_T_fine" "${no_vtu[@]}" \
-  --set "Garment/Mesh scale=0.63"
+# The paper's Figure 14: garment 4 5T at about 575 vertices (the case's own mesh, 552) and
+# 1397 (Mesh scale 0.62: 1444 vertices, 2736 triangles against the paper's 2738).
+run compare_45T compare cases/cylinder_45T.prm --output "$results/cylinder_45T_compare" \
+  "${no_vtu[@]}"
+run compare_45T_fine compare cases/cylinder_45T.prm --output "$results/cylinder_45T_fine" \
+  "${no_vtu[@]}" --set "Garment/Mesh scale=0.62"
 run gravity run cases/cylinder_T.prm --output "$results/cylinder_T_gravity" "${no_vtu[@]}" \
   --set "Protocol/Gravity while settling=true" --set "Protocol/Gravity while measuring=true"
 run paper_area run cases/cylinder_T.prm --output "$results/cylinder_T_adjacent" "${no_vtu[@]}" \
@@ -51,14 +53,14 @@ run convergence convergence cases/cylinder_T.prm --levels "$levels" --set "Garme
   --set "Protocol/Alpha increment=0.1" --output "$results/cylinder_T_convergence"
 # Coarse against fine (Figure 14) in the long format of convergence.csv, for the plot and tables.
 vertices_of() { awk -v run="== $1:" 'index($0, run) == 1 {f = 1} f && /mesh:/ {print $2; exit}' "$log"; }
-n_coarse=$(vertices_of compare)
-n_fine=$(vertices_of compare_fine)
+n_coarse=$(vertices_of compare_45T)
+n_fine=$(vertices_of compare_45T_fine)
 {
   echo "backend,level,n_vertices,alpha,p_mean_Pa,p_theory_Pa,rel_error"
   for backend in massspring fem; do
     for level in 0 1; do
-      dir=$results/cylinder_T_compare n=$n_coarse
-      [[ $level == 1 ]] && dir=$results/cylinder_T_fine n=$n_fine
+      dir=$results/cylinder_45T_compare n=$n_coarse
+      [[ $level == 1 ]] && dir=$results/cylinder_45T_fine n=$n_fine
       awk -F, -v b=$backend -v l=$level -v n="$n" '
         NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next}
         {print b "," l "," n "," $c["alpha"] "," $c["p_mean_Pa"] "," $c["p_theory_Pa"] "," $c["rel_error"]}' \
@@ -119,7 +121,8 @@ ends); Eq. 7 is the paper's \`P = Et (1 - 1/alpha) / R0\`.
 | garment T on the growing cylinder | \`tightfit run cases/cylinder_T.prm\` | $(outcome cylinder_T) |
 | garment 4 5T | \`tightfit run cases/cylinder_45T.prm\` | $(outcome cylinder_45T) |
 | both backends, same mesh | \`tightfit compare cases/cylinder_T.prm\` | $(outcome compare) |
-| both backends, fine mesh | \`compare\` with \`Garment/Mesh scale=0.63\` | $(outcome compare_fine) |
+| garment 4 5T, both backends | \`tightfit compare cases/cylinder_45T.prm\` | $(outcome compare_45T) |
+| garment 4 5T, both backends, fine mesh | \`compare\` with \`Garment/Mesh scale=0.62\` | $(outcome compare_45T_fine) |
 | gravity while settling and measuring | \`run\` with \`Protocol/Gravity while ...=true\` | $(outcome gravity) |
 | the paper's vertex area (adjacent triangles) | \`run\` with \`Pressure/Vertex area=adjacent triangles\` | $(outcome paper_area) |
 | mesh convergence, ${levels} levels | \`tightfit convergence cases/cylinder_T.prm --levels ${levels} --set "Garment/Mesh scale=2" --set "Protocol/Alpha increment=0.1"\` | $(outcome convergence) |
@@ -165,6 +168,24 @@ $(png fig10_pressure_alpha "Pressure against alpha, both backends, closed form a
 Eq. 7 is the linear Biot law without Poisson coupling; the case's fabric has nu12 = 0.2021
 and free ends, so the closed form lies above Eq. 7 as alpha grows.
 
+## Newton's convergence (FE backend)
+
+The FE backend's \`solver.log\` lists the largest residual force after every Newton
+iteration, per augmented-Lagrangian round (\`|\` separates the rounds). The first load
+steps of the comparison on garment T, and the order of convergence read off the last three
+residuals of each step's first round, \`ln(r_k+1 / r_k) / ln(r_k / r_k-1)\` (2 for
+Newton's quadratic convergence):
+
+\`\`\`
+$(sed -n '2,4p' "$results/cylinder_T_compare/fem/solver.log" 2>/dev/null | cut -d';' -f1)
+\`\`\`
+
+$(sed -n '2,4p' "$results/cylinder_T_compare/fem/solver.log" 2>/dev/null | awk '
+  { match($0, /\[[^]]*\]/); n = split(substr($0, RSTART + 1, RLENGTH - 2), r, " ")
+    split($0, head, ":")
+    if (n >= 3) printf "- %s: order %.2f from %s, %s, %s N\n", head[1],
+      log(r[n] / r[n - 1]) / log(r[n - 1] / r[n - 2]), r[n - 2], r[n - 1], r[n] }')
+
 ## Pressure round the cylinder, with and without gravity (the paper's Figures 11 and 13)
 
 Without gravity the state is uniform and the pressure is the same all round; with gravity
@@ -198,7 +219,7 @@ MD
   fi
   cat <<MD
 
-## Mesh convergence (the paper's Figure 14)
+## Mesh convergence
 
 The case at ${levels} meshes, the edge length halved each level, on every backend. Observed
 order from the finest three levels, Richardson-extrapolated pressure, and Roache's grid
@@ -237,9 +258,9 @@ $(png convergence_error "Log-log error against edge length")
 
 ## Coarse against fine mesh (the paper's Figure 14)
 
-The paper ran its cylinder on a coarse mesh (575 vertices) and a fine one (1397) and found
-the mean pressures within 1% of each other. tightfit's garment T on its own mesh and at
-Mesh scale 0.63, both backends, every fourth load step (alpha 0.2 apart):
+The paper ran garment 4 5T on a coarse mesh (575 vertices) and a fine one (1397) and found
+that the mean pressures "do not differ significantly". tightfit's garment 4 5T on its own
+mesh and at Mesh scale 0.62, both backends, every fourth load step (alpha 0.2 apart):
 
 $(awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next}
   {k = $c["backend"] SUBSEP $c["alpha"]; p[$c["level"], k] = $c["p_mean_Pa"]; t[k] = $c["p_theory_Pa"]
@@ -251,11 +272,21 @@ $(awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next}
     for (i = 1; i <= n; i++) { split(key[i], bk, SUBSEP); if (p[0, key[i]] <= 0 || p[1, key[i]] == "") continue
       d = 100 * (p[1, key[i]] - p[0, key[i]]) / p[0, key[i]]
       if (bk[2] > 1.01 && (d < 0 ? -d : d) > worst) {worst = (d < 0 ? -d : d); worst_at = bk[1] " at alpha " bk[2]}
+      if (bk[2] > 1.09 && (d < 0 ? -d : d) > worst_later) worst_later = (d < 0 ? -d : d)
       if (int(100 * bk[2] + 0.5) % 20 == 0) printf "| %s | %.2f | %.2f | %.2f | %+.3f | %.2f |\n", bk[1], bk[2], p[0, key[i]], p[1, key[i]], d, t[key[i]] }
-    printf "\nLargest coarse-fine difference over the loaded steps (alpha > 1.01): %.3f%%, %s, where the pressure is smallest (the paper: under 1%%).\n", worst, worst_at }' \
+    printf "\nLargest coarse-fine difference over the loaded steps (alpha > 1.01): %.3f%%, %s; from alpha 1.1 on: %.3f%%.\n", worst, worst_at, worst_later }' \
   "$results/coarse_fine.csv" 2>/dev/null)
 
 $(png fig14_coarse_fine "Coarse and fine meshes: pressure and error against alpha")
+
+Where the two meshes differ most is where the pressure is smallest, just after the garment
+first presses (alpha 1.05: 5% hoop strain). Linear triangles inscribe a polygon of N vertices
+in the circle and under-read the hoop strain by about (pi/N)^2 / 6; relative to the strain
+alpha - 1 that is (pi/N)^2 / 6 x alpha / (alpha - 1), twenty times larger at alpha 1.05 than
+the strain error itself. With 46 vertices round the coarse hoop and 76 round the fine one
+the predicted coarse-fine difference is 1.03% at alpha 1.05, 0.54% at 1.1 and 0.11% at 1.8
+(docs/model.md, "Garments in pattern space"); the mass-spring backend's penalty contact adds
+its own part, which also falls as h^2.
 MD
 } >"$report"
 echo "wrote $report and $figures/ in ${elapsed} s of runs"
