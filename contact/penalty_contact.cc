@@ -7,13 +7,16 @@ double penalty_stiffness_Pa_per_m(double penalty_factor, double stiffness_scale_
   return penalty_factor * stiffness_scale_N_per_m / (mean_edge_length_m * mean_edge_length_m);
 }
 
-Vec3 penalty_force_N(const SurfacePoint& s, double stiffness_Pa_per_m, double rest_area_m2) {
-  if (s.signed_distance_m >= 0.0) return Vec3::Zero();
-  return (-s.signed_distance_m * stiffness_Pa_per_m * rest_area_m2) * s.outward_normal;
+Vec3 penalty_force_N(const SurfacePoint& s, double stiffness_Pa_per_m, double rest_area_m2,
+                     double multiplier_N) {
+  return contact_multiplier_N(multiplier_N, stiffness_Pa_per_m * rest_area_m2,
+                              s.signed_distance_m) *
+         s.outward_normal;
 }
 
 void apply_penalty_contact(const RigidBody& body, double stiffness_Pa_per_m,
-                           const std::vector<double>& rest_vertex_area_m2, SurfaceState& state) {
+                           const std::vector<double>& rest_vertex_area_m2, SurfaceState& state,
+                           const std::vector<double>& multiplier_N) {
   const std::size_t n = state.positions_m.size();
   state.contact_force_N.assign(n, Vec3::Zero());
   state.in_contact.assign(n, 0);
@@ -21,8 +24,9 @@ void apply_penalty_contact(const RigidBody& body, double stiffness_Pa_per_m,
   for (std::size_t v = 0; v < n; ++v) {
     const SurfacePoint s = body.query(state.positions_m[v]);
     state.gap_m[v] = s.signed_distance_m;
-    state.in_contact[v] = s.signed_distance_m < 0.0;
-    state.contact_force_N[v] = penalty_force_N(s, stiffness_Pa_per_m, rest_vertex_area_m2[v]);
+    state.contact_force_N[v] = penalty_force_N(s, stiffness_Pa_per_m, rest_vertex_area_m2[v],
+                                               multiplier_N.empty() ? 0.0 : multiplier_N[v]);
+    state.in_contact[v] = state.contact_force_N[v] != Vec3::Zero();
   }
 }
 

@@ -6,7 +6,7 @@
 #include "contact/cylinder.h"
 #include "core/mesh_geometry.h"
 #include "fem/membrane_kernel.h"
-#include "fem/nodal_contact.h"
+#include "contact/nodal_contact.h"
 #include "fem/petsc_linear_solver.h"
 #include "fem/traction_recovery.h"
 

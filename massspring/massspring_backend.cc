@@ -72,6 +72,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
     x_[mesh.welded_index[u]] = Vec3(p.x(), p.y(), 0.0);
   }
   v_.assign(n, Vec3::Zero());
+  multiplier_N_.assign(n, 0.0);
   force_.assign(n, Vec3::Zero());
   if (parameters_.placement == Placement::flat_panels)
     flat_start_ = std::make_unique<FlatPanelStart>(problem_, parameters_);
@@ -103,7 +104,8 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   const double k = problem_.contact_stiffness_Pa_per_m;
   double largest_squared = 0.0, total_squared = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (body && k > 0) force[i] += penalty_force_N(body->query(x[i]), k, rest_vertex_area_m2_[i]);
+    if (body && k > 0)
+      force[i] += penalty_force_N(body->query(x[i]), k, rest_vertex_area_m2_[i], multiplier_N_[i]);
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
     if (held_[i]) remove_held_component(force[i]);
     const double squared = force[i].squaredNorm();
@@ -137,6 +139,21 @@ double MassSpringBackend::choose_time_step_s() const {
     for (std::size_t i = 0; i < x_.size(); ++i)
       stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
   return stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety);
+}
+
+double MassSpringBackend::contact_penetration_m(bool update_multipliers) {
+  double penetration_m = 0.0;
+  const RigidBody* body = problem_.body;
+  const double k = problem_.contact_stiffness_Pa_per_m;
+  if (!body || !(k > 0)) return penetration_m;
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    const double gap_m = body->query(x_[i]).signed_distance_m;
+    const double lambda_N =
+        contact_multiplier_N(multiplier_N_[i], k * rest_vertex_area_m2_[i], gap_m);
+    if (update_multipliers) multiplier_N_[i] = lambda_N;
+    if (lambda_N > 0.0) penetration_m = std::max(penetration_m, -gap_m);
+  }
+  return penetration_m;
 }
 
 StepReport MassSpringBackend::solve(const LoadStep& step) {
@@ -177,27 +194,55 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
 
   int frame = 0;
   double residual = 0.0;
-  for (;;) {
-    // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
-    const bool quasi_static = frame < parameters_.quasi_static_frames;
-    if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
-    residual =
-        rk4_frame(time_step_s_, quasi_static ? 0.0 : damping_per_s_, step.gravity_on, tolerance_N_);
-    if (!std::isfinite(residual))
-      throw fail("diverged (non-finite force; try a smaller Mass spring/Time step)", frame,
-                 residual);
-    if (residual < tolerance_N_) break;  // rk4_frame left the stable state untouched
-    ++frame;
-    if (frame % 64 == 0)
-      for (std::size_t i = 0; i < x_.size(); ++i)
-        if (!((x_[i] - start_x[i]).norm() < runaway_m))
-          throw fail("diverged (vertex " + std::to_string(i) + " ran away)", frame, residual);
-    if (frame >= parameters_.maximum_frames) {
-      residual = residual_forces(x_, step.gravity_on, force_);
-      if (residual < tolerance_N_) break;
-      throw fail("did not reach equilibrium within Mass spring/Maximum frames", frame, residual);
+  // Damped RK4 from the current state until the stop rule holds; `frame` counts on over the
+  // settles of one step (the frame limit is the step's).
+  auto settle = [&]() {
+    for (;;) {
+      // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
+      const bool quasi_static = frame < parameters_.quasi_static_frames;
+      if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
+      residual = rk4_frame(time_step_s_, quasi_static ? 0.0 : damping_per_s_, step.gravity_on,
+                           tolerance_N_);
+      if (!std::isfinite(residual))
+        throw fail("diverged (non-finite force; try a smaller Mass spring/Time step)", frame,
+                   residual);
+      if (residual < tolerance_N_) return;  // rk4_frame left the stable state untouched
+      ++frame;
+      if (frame % 64 == 0)
+        for (std::size_t i = 0; i < x_.size(); ++i)
+          if (!((x_[i] - start_x[i]).norm() < runaway_m))
+            throw fail("diverged (vertex " + std::to_string(i) + " ran away)", frame, residual);
+      if (frame >= parameters_.maximum_frames) {
+        residual = residual_forces(x_, step.gravity_on, force_);
+        if (residual < tolerance_N_) return;
+        throw fail("did not reach equilibrium within Mass spring/Maximum frames", frame, residual);
+      }
     }
+  };
+  // Uzawa's iteration on the contact multipliers (penalty_contact.h): each settled state
+  // hands its contact forces to the next settle as multipliers, until no vertex sits deeper
+  // than the gap tolerance; the state settles once more after the last update, which moves
+  // every force by kA g. The multipliers carry over to the next load step as its start.
+  const bool augmented = parameters_.contact_updates > 0;
+  int updates = 0;
+  for (;;) {
+    settle();
+    if (!augmented) break;
+    const double penetration_m = contact_penetration_m(true);
+    if (penetration_m <= parameters_.gap_tolerance_m) {
+      settle();
+      break;
+    }
+    if (updates == parameters_.contact_updates) {
+      std::ostringstream what;
+      what << "kept a penetration of " << penetration_m << " m (Mass spring/Gap tolerance "
+           << parameters_.gap_tolerance_m << " m) after " << updates
+           << " contact multiplier updates";
+      throw fail(what.str(), frame, residual);
+    }
+    ++updates;
   }
+  const double penetration_m = contact_penetration_m(false);
 
   StepReport report;
   report.converged = true;
@@ -209,8 +254,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   std::ostringstream detail;
   detail << "mass spring: " << step_name(step) << " " << flat_start_detail << "stable after "
          << frame << " frames (" << std::min(frame, parameters_.quasi_static_frames)
-         << " quasi-static), dt " << time_step_s_ << " s, damping " << damping_per_s_
-         << " 1/s, residual " << residual << " N < " << tolerance_N_ << " N, "
+         << " quasi-static, " << updates << " contact multiplier updates), dt " << time_step_s_
+         << " s, damping " << damping_per_s_ << " 1/s, residual " << residual << " N < "
+         << tolerance_N_ << " N, largest penetration " << penetration_m << " m, "
          << report.wall_seconds << " s";
   report.detail = detail.str();
   return report;
@@ -223,7 +269,7 @@ SurfaceState MassSpringBackend::state() const {
   internal_forces(x_, s.internal_force_N);
   if (problem_.body) {
     apply_penalty_contact(*problem_.body, problem_.contact_stiffness_Pa_per_m, rest_vertex_area_m2_,
-                          s);
+                          s, multiplier_N_);
   } else {
     s.contact_force_N.assign(x_.size(), Vec3::Zero());
     s.in_contact.assign(x_.size(), 0);

@@ -2,8 +2,9 @@
 // elements, angular bending springs, penalty contact from contact/, integrated by
 // fourth-order Runge-Kutta with mass-proportional damping after the paper's quasi-static
 // start (velocity ignored). Time integration is only the road to the static equilibrium:
-// a load step ends when the largest residual force is below a tolerance relative to the
-// garment's tension scale.
+// a load step settles until the largest residual force is below a tolerance relative to the
+// garment's tension scale, then (Contact multiplier updates) updates the contact multipliers
+// and settles again until no vertex sits deeper in the body than the gap tolerance.
 //
 // Placement (MassSpringParameters): "sewn tube" starts every load step from the positions
 // given by set_positions. "flat panels" starts the first load step from the paper's flat
@@ -60,6 +61,10 @@ class MassSpringBackend final : public Backend {
   // the state is left untouched.
   double rk4_frame(double dt_s, double damping_per_s, bool gravity_on, double stop_below_N);
   double choose_time_step_s() const;
+  // The largest depth of a vertex in contact at the current state, m; with
+  // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact
+  // force (penalty_contact.h).
+  double contact_penetration_m(bool update_multipliers);
   void remove_held_component(Vec3& vector) const {
     vector -= vector.dot(held_direction_) * held_direction_;
   }
@@ -81,6 +86,8 @@ class MassSpringBackend final : public Backend {
   std::unique_ptr<FlatPanelStart> flat_start_;
 
   std::vector<Vec3> x_, v_;
+  // Contact multiplier estimate of each particle, N (all zero: the plain penalty).
+  std::vector<double> multiplier_N_;
   DampedRk4 integrator_;
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;

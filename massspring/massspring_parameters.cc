@@ -47,6 +47,16 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Maximum frames", text(d.maximum_frames), Integer(1, 2000000000),
                     "Guard against non-convergence, frames: a load step that has not met the "
                     "stop rule by then fails with an error naming the step and residual.");
+  prm.declare_entry("Contact multiplier updates", text(d.contact_updates), Integer(0, 1000),
+                    "Augmented-Lagrangian (Uzawa) updates per load step, count: after each stable "
+                    "state every vertex's contact multiplier becomes its contact force and the "
+                    "garment settles again, until the largest penetration is below Gap "
+                    "tolerance; the pressure then does not depend on Contact/Penalty factor, "
+                    "as with the FE backend. A step that needs more updates fails. 0 = the "
+                    "plain penalty of the paper's model: vertices settle p / k inside the body.");
+  prm.declare_entry("Gap tolerance", text(d.gap_tolerance_m), Double(1e-15, 1.0),
+                    "Largest penetration of a vertex in contact at a finished load step with "
+                    "contact multiplier updates, m.");
   prm.declare_entry("Bending rigidity", text(d.bending_rigidity_N_m), Double(0.0, 1.0),
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
                     "Angular springs on interior edges, hinge stiffness 3 B |e|^2 / (A1 + A2) "
@@ -80,6 +90,8 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   quasi_static_frames = prm.get_integer("Quasi-static frames");
   relative_tolerance = prm.get_double("Relative tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
+  contact_updates = prm.get_integer("Contact multiplier updates");
+  gap_tolerance_m = prm.get_double("Gap tolerance");
   bending_rigidity_N_m = prm.get_double("Bending rigidity");
   placement = prm.get("Placement") == "flat panels" ? Placement::flat_panels : Placement::sewn_tube;
   placement_gap_m = prm.get_double("Placement gap");

@@ -39,6 +39,12 @@ struct MassSpringParameters {
   // Guard against non-convergence: a load step that has not met the stop rule after this
   // many frames fails with an error.
   int maximum_frames = 200000;
+  // Contact multiplier updates (Uzawa) per load step: after each stable state every vertex's
+  // multiplier becomes its contact force and the garment settles again, until the largest
+  // penetration is below gap_tolerance_m. 0 = the plain penalty (vertices sit p / k inside).
+  int contact_updates = 10;
+  // Largest penetration of a vertex in contact at a finished step with contact updates, m.
+  double gap_tolerance_m = 1e-8;
   // Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m).
   double bending_rigidity_N_m = 1e-6;
   // Start of the first load step.

@@ -18,6 +18,8 @@ void MassSpringParameters::validate() const {
   require(relative_tolerance > 0 && relative_tolerance < 1, "Relative tolerance",
           "must be in (0, 1)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
+  require(contact_updates >= 0, "Contact multiplier updates", "must be >= 0 (0 = plain penalty)");
+  require(gap_tolerance_m > 0, "Gap tolerance", "must be positive (m)");
   require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");
   require(placement_gap_m >= 0, "Placement gap", "must be >= 0 (m)");
   require(seam_stiffness_factor > 0, "Seam spring stiffness factor", "must be positive");

@@ -3,7 +3,7 @@
 #include "contact/cylinder.h"
 #include "core/material.h"
 #include "fem/membrane_kernel.h"
-#include "fem/nodal_contact.h"
+#include "contact/nodal_contact.h"
 
 #include <gtest/gtest.h>
 

@@ -27,7 +27,10 @@ TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
     // Contact pushes outwards along the radius; the garment pulls inwards.
     const Vec3 radial = Vec3(s.positions_m[v].x(), s.positions_m[v].y(), 0).normalized();
     EXPECT_GT(s.contact_force_N[v].dot(radial), 0.0);
-    EXPECT_LT(s.gap_m[v], 0.0);
+    // On the surface to the gap tolerance: the contact multipliers have taken the penalty's
+    // penetration away.
+    EXPECT_TRUE(s.in_contact[v]);
+    EXPECT_LT(std::abs(s.gap_m[v]), MassSpringParameters{}.gap_tolerance_m);
   }
   EXPECT_LT(largest, report.tolerance_N);
   EXPECT_GT(largest_contact, 100 * report.tolerance_N);
@@ -38,6 +41,46 @@ TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
   const double h = mean_rest_edge_length_m(tube.mesh);
   EXPECT_NEAR(report.tolerance_N, 1e-4 * tube.law->stiffness_scale() * h * h / std::sqrt(area_m2),
               1e-15);
+}
+
+// Contact multiplier updates make the pressure independent of the penalty stiffness; without
+// them (the plain penalty) each vertex sits p / k inside the body and the mean pressure
+// depends on k.
+TEST(MassSpringSolver, ContactMultipliersRemoveThePenaltyFromThePressure) {
+  auto mean_pressure_and_depth = [](double penalty_factor, int updates) {
+    test::TubeOnCylinder tube(0.157, MeshSpacing{});
+    tube.problem.contact_stiffness_Pa_per_m = penalty_stiffness_Pa_per_m(
+        penalty_factor, tube.law->stiffness_scale(), mean_rest_edge_length_m(tube.mesh));
+    tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+    MassSpringParameters parameters;
+    parameters.contact_updates = updates;
+    MassSpringBackend backend(tube.problem, parameters);
+    backend.set_positions(tube.start_positions());
+    backend.solve(LoadStep{0, 1.3, false});
+    const SurfaceState s = backend.state();
+    double force_N = 0.0, depth_m = 0.0;
+    for (std::size_t v = 0; v < s.size(); ++v) {
+      force_N += s.contact_force_N[v].norm();
+      depth_m = std::max(depth_m, -s.gap_m[v]);
+    }
+    // Total contact force over the cylinder's area under the tube: the mean pressure.
+    const double area_m2 = 2 * M_PI * tube.cylinder.radius_m() * test::TubeOnCylinder::height_m;
+    return std::make_pair(force_N / area_m2, depth_m);
+  };
+  const auto [soft, soft_depth] = mean_pressure_and_depth(20.0, 10);
+  const auto [stiff, stiff_depth] = mean_pressure_and_depth(200.0, 10);
+  // Equal to what the stop rule leaves: a residual of 1e-4 Y h^2 / L (1.4e-5 N) is 1.4e-4 of
+  // a vertex's contact force (0.1 N) here.
+  EXPECT_NEAR(soft / stiff, 1.0, 1.4e-4);
+  EXPECT_LT(std::max(soft_depth, stiff_depth), MassSpringParameters{}.gap_tolerance_m);
+  // The plain penalty: a pressure that moves with k, and a depth of f / (k A0) = p alpha / k
+  // (a vertex's force f = p A over its rest area A0 = A / alpha: hoop stretch alpha, axial 1).
+  const auto [plain, plain_depth] = mean_pressure_and_depth(20.0, 0);
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  const double k = penalty_stiffness_Pa_per_m(20.0, tube.law->stiffness_scale(),
+                                              mean_rest_edge_length_m(tube.mesh));
+  EXPECT_NEAR(plain_depth, 1.3 * plain / k, 0.01 * plain / k);
+  EXPECT_GT(std::abs(plain / stiff - 1.0), 1e-3);
 }
 
 TEST(MassSpringSolver, HeldEndsCarryTheWeightOfAHangingTube) {

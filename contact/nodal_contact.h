@@ -1,7 +1,8 @@
-// Frictionless augmented-Lagrangian contact of one vertex with a rigid body.
+// Frictionless augmented-Lagrangian contact of one vertex with a rigid body, with the
+// stiffness an implicit solver needs.
 //
 // With the penalty stiffness kA = k A0 (k in Pa/m, A0 the vertex's rest area) and the
-// multiplier estimate lambda_bar (N), the contact force on the vertex is
+// multiplier estimate lambda_bar (N), the contact force on the vertex is penalty_contact.h's
 //   lambda n,  lambda = max(0, lambda_bar - kA g)  (g the signed distance, n the body normal),
 // the derivative of the potential max(0, lambda_bar - kA g)^2 / (2 kA). Updating lambda_bar to
 // lambda after each converged solve drives g to zero for any kA (Uzawa's iteration), so the

@@ -1,6 +1,6 @@
-#include "fem/nodal_contact.h"
+#include "contact/nodal_contact.h"
 
-#include <algorithm>
+#include "contact/penalty_contact.h"
 
 namespace tightfit {
 
@@ -10,7 +10,7 @@ NodalContact nodal_contact(const RigidBody& body, const Vec3& x_m, double multip
   const SurfacePoint s = body.query(x_m);
   c.gap_m = s.signed_distance_m;
   c.normal = s.outward_normal;
-  c.multiplier_N = std::max(0.0, multiplier_estimate_N - penalty_N_per_m * c.gap_m);
+  c.multiplier_N = contact_multiplier_N(multiplier_estimate_N, penalty_N_per_m, c.gap_m);
   if (c.multiplier_N <= 0.0) return c;
   c.force_N = c.multiplier_N * c.normal;
   if (normal_step_m <= 0.0) return c;
