@@ -135,6 +135,25 @@ TEST(MassSpringSolver, NonConvergenceThrowsNamingTheStepAndResidual) {
   }
 }
 
+TEST(MassSpringSolver, ContactThatDoesNotCloseThrowsNamingTheStepAndPenetration) {
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  MassSpringParameters parameters;
+  parameters.contact_updates = 1;
+  parameters.gap_tolerance_m = 1e-15;  // below what one update reaches from the plain penalty
+  MassSpringBackend backend(tube.problem, parameters);
+  backend.set_positions(tube.start_positions());
+  try {
+    backend.solve(LoadStep{4, 1.3, false});
+    FAIL() << "expected SolverError";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("load step 4"), std::string::npos) << message;
+    EXPECT_NE(message.find("penetration"), std::string::npos) << message;
+    EXPECT_NE(message.find("1 contact multiplier updates"), std::string::npos) << message;
+  }
+}
+
 TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
   tube.cylinder.set_radius(1.5 * tube.rest_radius_m());
