@@ -94,8 +94,11 @@ void declare_contact(ParameterHandler& prm) {
   prm.enter_subsection("Contact");
   prm.declare_entry("Penalty factor", "100", Patterns::Double(1e-3),
                     "beta in the penalty stiffness k = beta Y / h^2 (Pa/m), Y the law's "
-                    "stiffness scale, h the mean rest edge length (-). The penetration is "
-                    "p / k; docs/model.md gives its effect on the pressure.");
+                    "stiffness scale, h the mean rest edge length (-). The mass-spring "
+                    "backend's contact: its multiplier updates take the penetration p / k "
+                    "away, so beta sets only their speed and the time step; with Mass "
+                    "spring/Contact multiplier updates = 0 the penetration stays and "
+                    "docs/model.md gives its effect on the pressure.");
   prm.leave_subsection();
 }
 

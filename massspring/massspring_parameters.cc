@@ -53,7 +53,7 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "garment settles again, until the largest penetration is below Gap "
                     "tolerance; the pressure then does not depend on Contact/Penalty factor, "
                     "as with the FE backend. A step that needs more updates fails. 0 = the "
-                    "plain penalty of the paper's model: vertices settle p / k inside the body.");
+                    "plain penalty: vertices settle p / k inside the body.");
   prm.declare_entry("Gap tolerance", text(d.gap_tolerance_m), Double(1e-15, 1.0),
                     "Largest penetration of a vertex in contact at a finished load step with "
                     "contact multiplier updates, m.");
