@@ -8,9 +8,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace tightfit {
 namespace {
+
+// The message of the SolverError that `step` throws when `backend` solves it; records a
+// failure and returns "" when it throws none.
+std::string solver_error_message(MassSpringBackend& backend, const LoadStep& step) {
+  try {
+    backend.solve(step);
+  } catch (const SolverError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected SolverError";
+  return "";
+}
 
 TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
@@ -124,15 +137,10 @@ TEST(MassSpringSolver, NonConvergenceThrowsNamingTheStepAndResidual) {
   // Start at the rest radius, deep inside the cylinder: three frames cannot settle that.
   backend.set_positions(
       place_tube_round_cylinder(tube.garment, tube.mesh, tube.cylinder, tube.rest_radius_m()));
-  try {
-    backend.solve(LoadStep{7, 1.5, false});
-    FAIL() << "expected SolverError";
-  } catch (const SolverError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("load step 7"), std::string::npos) << message;
-    EXPECT_NE(message.find("alpha 1.5"), std::string::npos) << message;
-    EXPECT_NE(message.find("residual"), std::string::npos) << message;
-  }
+  const std::string message = solver_error_message(backend, LoadStep{7, 1.5, false});
+  EXPECT_NE(message.find("load step 7"), std::string::npos) << message;
+  EXPECT_NE(message.find("alpha 1.5"), std::string::npos) << message;
+  EXPECT_NE(message.find("residual"), std::string::npos) << message;
 }
 
 TEST(MassSpringSolver, ContactThatDoesNotCloseThrowsNamingTheStepAndPenetration) {
@@ -143,15 +151,10 @@ TEST(MassSpringSolver, ContactThatDoesNotCloseThrowsNamingTheStepAndPenetration)
   parameters.gap_tolerance_m = 1e-15;  // below what one update reaches from the plain penalty
   MassSpringBackend backend(tube.problem, parameters);
   backend.set_positions(tube.start_positions());
-  try {
-    backend.solve(LoadStep{4, 1.3, false});
-    FAIL() << "expected SolverError";
-  } catch (const SolverError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("load step 4"), std::string::npos) << message;
-    EXPECT_NE(message.find("penetration"), std::string::npos) << message;
-    EXPECT_NE(message.find("1 contact multiplier updates"), std::string::npos) << message;
-  }
+  const std::string message = solver_error_message(backend, LoadStep{4, 1.3, false});
+  EXPECT_NE(message.find("load step 4"), std::string::npos) << message;
+  EXPECT_NE(message.find("penetration"), std::string::npos) << message;
+  EXPECT_NE(message.find("1 contact multiplier updates"), std::string::npos) << message;
 }
 
 TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
@@ -161,14 +164,9 @@ TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
   parameters.time_step_s = 1e-2;  // far beyond RK4's stability limit for this mesh
   MassSpringBackend backend(tube.problem, parameters);
   backend.set_positions(tube.start_positions());
-  try {
-    backend.solve(LoadStep{2, 1.5, false});
-    FAIL() << "expected SolverError";
-  } catch (const SolverError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("diverged"), std::string::npos) << message;
-    EXPECT_NE(message.find("load step 2"), std::string::npos) << message;
-  }
+  const std::string message = solver_error_message(backend, LoadStep{2, 1.5, false});
+  EXPECT_NE(message.find("diverged"), std::string::npos) << message;
+  EXPECT_NE(message.find("load step 2"), std::string::npos) << message;
 }
 
 TEST(MassSpringSolver, RestStateIsStableWithoutAFrame) {
