@@ -4,9 +4,9 @@
 #include "fem/fem_backend.h"
 
 #include "contact/cylinder.h"
+#include "contact/nodal_contact.h"
 #include "core/mesh_geometry.h"
 #include "fem/membrane_kernel.h"
-#include "contact/nodal_contact.h"
 #include "fem/petsc_linear_solver.h"
 #include "fem/traction_recovery.h"
 
@@ -165,8 +165,9 @@ class FemBackend::Implementation {
   void set_positions(const std::vector<Vec3>& positions_m);
   StepReport solve(const LoadStep& step);
 
-  void linearise(const std::vector<Vec3>& positions_m, Eigen::VectorXd& residual_N,
+  void linearise(const std::vector<Vec3>& node_positions_m, Eigen::VectorXd& residual_N,
                  Eigen::MatrixXd& tangent_N_per_m) const;
+  std::vector<Vec3> node_positions(const std::vector<Vec3>& vertex_positions_m) const;
   std::vector<Vec3> internal_force_N(const dealii::Vector<double>& x) const;
   dealii::Vector<double> dof_positions(const std::vector<Vec3>& positions_m) const;
 
@@ -234,8 +235,6 @@ class FemBackend::Implementation {
   std::vector<std::vector<double>> cell_JxW_m2_;
   std::vector<std::vector<Vec2>> cell_grad_grain_;
   std::vector<char> cell_owned_;
-  // DoF -> row 3 w + c of the welded vertex w it carries (component c); -1 off vertices.
-  std::vector<int> dof_vertex_row_;
   // Contact nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
   // n_vertices + e. Per node, the DoFs of each copy (one per panel it lies in); the first
   // carries it, the others follow it (seam constraints).
@@ -302,9 +301,6 @@ FemBackend::Implementation::Implementation(const Problem& problem, const FemPara
   master_.assign(mesh.n_vertices, -1);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
     if (master_[mesh.welded_index[u]] < 0) master_[mesh.welded_index[u]] = u;
-  dof_vertex_row_.assign(dof_handler_.n_dofs(), -1);
-  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-    for (int c = 0; c < 3; ++c) dof_vertex_row_[vertex_dofs_[u][c]] = 3 * mesh.welded_index[u] + c;
   build_nodes();
   build_cell_quadrature();
   linear_solver_ = std::make_unique<PetscLinearSolver>(parameters.linear_solver,
@@ -1030,14 +1026,28 @@ void FemBackend::Implementation::update_state_from_recovered_traction() {
   }
 }
 
-void FemBackend::Implementation::linearise(const std::vector<Vec3>& positions_m,
+std::vector<Vec3> FemBackend::Implementation::node_positions(
+    const std::vector<Vec3>& vertex_positions_m) const {
+  const dealii::Vector<double> x = dof_positions(vertex_positions_m);
+  std::vector<Vec3> nodes(n_nodes());
+  for (int node = 0; node < n_nodes(); ++node) nodes[node] = node_position(x, node);
+  return nodes;
+}
+
+void FemBackend::Implementation::linearise(const std::vector<Vec3>& node_positions_m,
                                            Eigen::VectorXd& residual_N,
                                            Eigen::MatrixXd& tangent_N_per_m) const {
-  if (parameters_.element_degree != 1)
-    throw std::logic_error("fem backend: linearise() is defined for linear elements only");
-  const SimulationMesh& mesh = *problem_.mesh;
-  const int n = mesh.n_vertices;
-  const dealii::Vector<double> x = dof_positions(positions_m);
+  if (static_cast<int>(node_positions_m.size()) != n_nodes())
+    throw std::invalid_argument("fem backend: linearise() needs one position per node");
+  dealii::Vector<double> x(dof_handler_.n_dofs());
+  // DoF -> row 3 node + c of the node it carries (every copy of a node shares its rows).
+  std::vector<int> dof_row(dof_handler_.n_dofs(), -1);
+  for (int node = 0; node < n_nodes(); ++node) {
+    set_node_position(x, node, node_positions_m[node]);
+    for (const DofTriple& d : node_copies_[node])
+      for (int c = 0; c < 3; ++c) dof_row[d[c]] = 3 * node + c;
+  }
+  const int n = n_nodes();
   residual_N.setZero(3 * n);
   tangent_N_per_m.setZero(3 * n, 3 * n);
   Eigen::VectorXd gradient;
@@ -1046,8 +1056,7 @@ void FemBackend::Implementation::linearise(const std::vector<Vec3>& positions_m,
   std::vector<int> row(n_local);
   for (unsigned int cell = 0; cell < cell_dofs_.size(); ++cell) {
     cell_kernel(cell, x, gradient, &hessian);
-    // Linear elements: every DoF of a cell sits on a vertex, the row of its welded vertex.
-    for (unsigned int i = 0; i < n_local; ++i) row[i] = dof_vertex_row_[cell_dofs_[cell][i]];
+    for (unsigned int i = 0; i < n_local; ++i) row[i] = dof_row[cell_dofs_[cell][i]];
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = 3 * local_node_[i] + local_component_[i];
       residual_N[row[i]] += gradient[a];
@@ -1055,11 +1064,12 @@ void FemBackend::Implementation::linearise(const std::vector<Vec3>& positions_m,
         tangent_N_per_m(row[i], row[j]) += hessian(a, 3 * local_node_[j] + local_component_[j]);
     }
   }
-  for (int w = 0; w < n; ++w) {
-    const NodalContact c = nodal_contact(*problem_.body, positions_m[w], multiplier_N_[w],
-                                         penalty_N_per_m_[w], normal_step_m_);
-    residual_N.segment<3>(3 * w) -= c.force_N;
-    tangent_N_per_m.block<3, 3>(3 * w, 3 * w) += c.stiffness_N_per_m;
+  for (int node = 0; node < n; ++node) {
+    const NodalContact c =
+        nodal_contact(*problem_.body, node_positions_m[node], multiplier_N_[node],
+                      penalty_N_per_m_[node], normal_step_m_);
+    residual_N.segment<3>(3 * node) -= c.force_N;
+    tangent_N_per_m.block<3, 3>(3 * node, 3 * node) += c.stiffness_N_per_m;
   }
 }
 
@@ -1098,9 +1108,13 @@ const std::vector<double>& FemBackend::last_residual_history_N() const {
   return impl_->history_N_;
 }
 
-void FemBackend::linearise(const std::vector<Vec3>& positions_m, Eigen::VectorXd& residual_N,
+void FemBackend::linearise(const std::vector<Vec3>& node_positions_m, Eigen::VectorXd& residual_N,
                            Eigen::MatrixXd& tangent_N_per_m) const {
-  impl_->linearise(positions_m, residual_N, tangent_N_per_m);
+  impl_->linearise(node_positions_m, residual_N, tangent_N_per_m);
+}
+
+std::vector<Vec3> FemBackend::node_positions(const std::vector<Vec3>& vertex_positions_m) const {
+  return impl_->node_positions(vertex_positions_m);
 }
 
 std::vector<Vec3> FemBackend::internal_force_N(const std::vector<Vec3>& positions_m) const {

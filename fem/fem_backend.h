@@ -51,12 +51,16 @@ class FemBackend final : public Backend {
   // Residual-force history (largest component, N) of every Newton iteration of the last step.
   const std::vector<double>& last_residual_history_N() const;
 
-  // For tests, serial and degree 1 only (std::logic_error otherwise): the residual
-  // R = dPi/dx - f_contact (N) on the welded vertices and its derivative dR/dx (N/m, 3n x 3n,
-  // node-major) at `positions_m`, with the current contact multipliers and without pins or
-  // held ends.
-  void linearise(const std::vector<Vec3>& positions_m, Eigen::VectorXd& residual_N,
+  // For tests, serial only: the residual R = dPi/dx - f_contact (N) on the nodes and its
+  // derivative dR/dx (N/m, 3n x 3n, node-major) at `node_positions_m`, with the current
+  // contact multipliers and without pins or held ends. The nodes are the welded vertices, then
+  // with degree 2 the midpoints of the welded edges (node_positions gives them); every copy of
+  // a seam node takes its node's position.
+  void linearise(const std::vector<Vec3>& node_positions_m, Eigen::VectorXd& residual_N,
                  Eigen::MatrixXd& tangent_N_per_m) const;
+  // The nodes' positions for the welded vertices at `vertex_positions_m`: those, then (degree
+  // 2) each edge's midpoint on its chord.
+  std::vector<Vec3> node_positions(const std::vector<Vec3>& vertex_positions_m) const;
   // The membrane's internal force (minus the energy gradient) on each welded vertex, N. With
   // degree 2 the edge midpoints sit on the chords between the given vertices, and their own
   // forces are left out.
