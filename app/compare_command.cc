@@ -16,7 +16,7 @@ int compare_command(const CommandLine& cl, std::ostream& out) {
   CaseParameters parameters = file.parameters();
   parameters.output.rank = cl.rank;
   parameters.output.n_ranks = cl.n_ranks;
-  auto setup = make_cylinder_setup(parameters);
+  auto setup = make_scenario(parameters);
   const std::string dir = output_directory_for(cl, cl.case_files.front(),
                                                setup->parameters.output.directory + "_compare");
   const auto& entries = backend_registry().entries();

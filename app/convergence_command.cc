@@ -4,7 +4,7 @@
 #include "app/summary_table.h"
 #include "cases/case_parameters.h"
 #include "cases/convergence_run.h"
-#include "cases/cylinder_setup.h"
+#include "cases/scenario.h"
 #include "core/backend_registry.h"
 #include "io/text_table.h"
 
@@ -50,7 +50,7 @@ int convergence_command(const CommandLine& cl, std::ostream& out) {
                           return file.create_backend(name, problem);
                         }});
   }
-  print_case_header(out, cl.case_files.front(), *make_cylinder_setup(parameters));
+  print_case_header(out, cl.case_files.front(), *make_scenario(parameters));
   out << "  convergence: " << cl.levels << " levels, mesh scale " << parameters.garment.mesh_scale
       << " halved each level, on " << backends.size() << " backends (no VTU output)\n";
 

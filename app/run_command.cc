@@ -2,8 +2,8 @@
 
 #include "app/summary_table.h"
 #include "cases/case_parameters.h"
-#include "cases/cylinder_run.h"
-#include "cases/cylinder_setup.h"
+#include "cases/scenario.h"
+#include "cases/scenario_run.h"
 
 #include <filesystem>
 #include <ostream>
@@ -21,32 +21,33 @@ int run_command(const CommandLine& cl, std::ostream& out) {
   // Read and check every case before running any, so a typo in the second file does not
   // surface after the first has run for minutes.
   std::vector<std::unique_ptr<CaseFile>> files;
-  std::vector<std::unique_ptr<CylinderSetup>> setups;
+  std::vector<std::unique_ptr<Scenario>> setups;
   for (const std::string& path : cl.case_files) {
     files.push_back(std::make_unique<CaseFile>());
     files.back()->read(path, cl.overrides);
     CaseParameters parameters = files.back()->parameters();
     parameters.output.rank = cl.rank;
     parameters.output.n_ranks = cl.n_ranks;
-    setups.push_back(make_cylinder_setup(parameters));
+    setups.push_back(make_scenario(parameters));
   }
 
   int status = 0;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    CylinderSetup& setup = *setups[i];
+    Scenario& setup = *setups[i];
     const CaseFile& file = *files[i];
     const std::string dir =
         output_directory_for(cl, cl.case_files[i], setup.parameters.output.directory);
     print_case_header(out, cl.case_files[i], setup);
-    const RunResult result = run_cylinder_case(
+    const RunResult result = run_scenario(
         setup,
         [&](const Problem& problem) {
           return file.create_backend(setup.parameters.backend, problem);
         },
         dir, out);
     out << "\n" << pressure_summary_table(setup, result);
-    out << "  results in " << dir << "/ (pressure.csv, pressure_theta.csv, solver.log"
-        << (setup.parameters.output.write_vtu ? ", garment.pvd, body.pvd" : "") << ")\n";
+    out << "  results in " << dir << "/ (pressure.csv, solver.log";
+    for (const std::string& f : result.files) out << ", " << f;
+    out << (setup.parameters.output.write_vtu ? ", garment.pvd, body.pvd" : "") << ")\n";
     if (!result.completed) {
       out << "  the run stopped early: " << result.failure << "\n";
       status = 1;

@@ -10,7 +10,7 @@
 // Mesh scale 1 is the paper's coarse mesh (552 vertices), 0.62 its fine one (1444 vertices,
 // 2736 triangles; the paper: 1397 and 2738).
 #include "cases/case_parameters.h"
-#include "cases/cylinder_setup.h"
+#include "cases/scenario.h"
 
 #include <benchmark/benchmark.h>
 
@@ -35,11 +35,11 @@ void stable_state(benchmark::State& bench, const std::string& backend, double al
   const CaseFile file;
   CaseParameters p = bench_parameters(file, backend, mesh_scale);
   p.protocol.final_alpha = alpha_to;
-  auto setup = make_cylinder_setup(p);
+  auto setup = make_scenario(p);
   setup->alphas = {alpha_from, alpha_to};
   auto solver = file.create_backend(backend, setup->problem);
   setup->prepare_step(0);
-  setup->body->set_radius(setup->radius_at(alpha_from));
+  setup->body->morph(1, alpha_from);  // the settled state at alpha_from
   solver->set_positions(setup->initial_positions());
   solver->solve(LoadStep{0, alpha_from, false});
   const std::vector<Vec3> settled = solver->state().positions_m;
@@ -61,7 +61,7 @@ void full_sweep(benchmark::State& bench, const std::string& backend, double mesh
   const CaseParameters p = bench_parameters(file, backend, mesh_scale);
   int n_vertices = 0, n_steps = 0;
   for (auto _ : bench) {
-    auto setup = make_cylinder_setup(p);
+    auto setup = make_scenario(p);
     auto solver = file.create_backend(backend, setup->problem);
     setup->prepare_step(0);
     solver->set_positions(setup->initial_positions());

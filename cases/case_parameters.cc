@@ -2,6 +2,8 @@
 // deal.II (its ParameterHandler), so that changing a case does not rebuild the heavy headers.
 #include "cases/case_parameters.h"
 
+#include "cases/parameter_tree.h"
+#include "cases/scenario_parts.h"
 #include "core/backend_registry.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -27,17 +29,73 @@ Vec3 parse_vec3(const std::string& text) {
 
 const Patterns::List vec3_pattern(Patterns::Double(), 3, 3, ",");
 
+// The scenario parts' view of the handler (cases/parameter_tree.h).
+class HandlerTree final : public ParameterTree {
+ public:
+  explicit HandlerTree(ParameterHandler& prm) : prm_(prm) {}
+  void enter_subsection(const std::string& name) override { prm_.enter_subsection(name); }
+  void leave_subsection() override { prm_.leave_subsection(); }
+  void declare_double(const std::string& name, double default_value, double min, double max,
+                      const std::string& documentation) override {
+    prm_.declare_entry(name, dealii::Utilities::to_string(default_value),
+                       max == unbounded ? Patterns::Double(min) : Patterns::Double(min, max),
+                       documentation);
+  }
+  void declare_integer(const std::string& name, int default_value, int min, int max,
+                       const std::string& documentation) override {
+    prm_.declare_entry(name, std::to_string(default_value), Patterns::Integer(min, max),
+                       documentation);
+  }
+  void declare_bool(const std::string& name, bool default_value,
+                    const std::string& documentation) override {
+    prm_.declare_entry(name, default_value ? "true" : "false", Patterns::Bool(), documentation);
+  }
+  void declare_selection(const std::string& name, const std::string& default_value,
+                         const std::string& options, const std::string& documentation) override {
+    prm_.declare_entry(name, default_value, Patterns::Selection(options), documentation);
+  }
+  void declare_multiple_selection(const std::string& name, const std::string& default_value,
+                                  const std::string& options,
+                                  const std::string& documentation) override {
+    prm_.declare_entry(name, default_value, Patterns::MultipleSelection(options), documentation);
+  }
+  void declare_vector(const std::string& name, const std::string& default_value,
+                      const std::string& documentation) override {
+    prm_.declare_entry(name, default_value, vec3_pattern, documentation);
+  }
+  void declare_text(const std::string& name, const std::string& default_value,
+                    const std::string& documentation) override {
+    prm_.declare_entry(name, default_value, Patterns::Anything(), documentation);
+  }
+  void declare_file_name(const std::string& name, const std::string& default_value,
+                         const std::string& documentation) override {
+    prm_.declare_entry(name, default_value, Patterns::FileName(), documentation);
+  }
+  std::string get(const std::string& name) override { return prm_.get(name); }
+  double get_double(const std::string& name) override { return prm_.get_double(name); }
+  int get_integer(const std::string& name) override {
+    return static_cast<int>(prm_.get_integer(name));
+  }
+  bool get_bool(const std::string& name) override { return prm_.get_bool(name); }
+
+ private:
+  ParameterHandler& prm_;
+};
+
+// Kind = one of the registry's parts, then each part's own subsection.
+template <class Made>
+void declare_kind(ParameterTree& tree, const PartRegistry<Made>& registry,
+                  const std::string& default_kind, const std::string& documentation) {
+  tree.declare_selection("Kind", default_kind, registry.names_joined("|"),
+                         documentation + " " + registry.descriptions());
+  registry.declare_parts(tree);
+}
+
 void declare_garment(ParameterHandler& prm) {
-  prm.enter_subsection("Garment");
+  HandlerTree tree(prm);
+  Subsection in(tree, "Garment");
+  declare_kind(tree, garment_kinds(), "tube", "What the garment is cut from:");
   prm.declare_entry("Name", "4 5T", Patterns::Anything(), "Name of the garment, for tables.");
-  prm.declare_entry("Panel width", "0.1878", Patterns::Double(1e-4),
-                    "Width of each panel, round the tube, along the weft (m). The paper's "
-                    "'4 5T': 0.1878; 'T': 0.157 (Table 3).");
-  prm.declare_entry("Panel height", "0.24", Patterns::Double(1e-4),
-                    "Height of each panel, along the tube, along the warp (m).");
-  prm.declare_entry("Number of panels", "2", Patterns::Integer(1, 64),
-                    "Panels sewn side by side into a closed tube; the rest circumference is "
-                    "this number times the panel width.");
   prm.declare_entry("Edge length weft", "0.008", Patterns::Double(1e-5),
                     "Target mesh spacing along the weft, round the tube (m). It sets how "
                     "closely the flat triangles follow the body's curvature.");
@@ -47,7 +105,6 @@ void declare_garment(ParameterHandler& prm) {
                     "Multiplies both edge lengths: 0.5 halves them (about four times the "
                     "vertices). 0.62 gives the paper's fine '4 5T': 1444 vertices, 2736 "
                     "triangles (the paper: 1397 and 2738).");
-  prm.leave_subsection();
 }
 
 void declare_material(ParameterHandler& prm) {
@@ -76,18 +133,45 @@ void declare_material(ParameterHandler& prm) {
 }
 
 void declare_body(ParameterHandler& prm) {
-  prm.enter_subsection("Body");
-  prm.declare_entry("Type", "cylinder", Patterns::Selection("cylinder"),
-                    "The rigid body the garment is worn on.");
-  prm.declare_entry("Initial radius", "0.05", Patterns::Double(0),
-                    "Radius of the cylinder the garment first settles on (m). Table 3: 5 cm.");
-  prm.declare_entry("Axis point", "0,0,0", vec3_pattern, "A point on the cylinder's axis (m).");
-  prm.declare_entry("Axis", "1,0,0", vec3_pattern,
-                    "Direction of the cylinder's axis (-). Horizontal by default, as in the "
-                    "paper's Figure 13, so that gravity acts across it.");
-  prm.declare_entry("Display height", "0.24", Patterns::Double(0),
-                    "Length of cylinder drawn in the body's VTU (m); contact is unbounded.");
+  HandlerTree tree(prm);
+  Subsection in(tree, "Body");
+  declare_kind(tree, body_kinds(), "cylinder",
+               "The rigid body the garment is worn on; its own entries are in the subsection of "
+               "the same name.");
+}
+
+void declare_placement(ParameterHandler& prm) {
+  HandlerTree tree(prm);
+  Subsection in(tree, "Placement");
+  declare_kind(tree, placement_kinds(), "tube round cylinder",
+               "Where the garment starts, before the first load step settles it:");
+}
+
+void declare_constraints(ParameterHandler& prm) {
+  prm.enter_subsection("Constraints");
+  prm.declare_entry("Held groups", "", Patterns::Anything(),
+                    "Comma-separated vertex groups of the garment (a tube's: bottom, top; a "
+                    "sheet's: bottom, top, left, right) that keep their coordinate along Held "
+                    "direction. 'bottom, top' on a tube: the paper's held ends (axial stretch "
+                    "1); empty: free ends.");
+  prm.declare_entry("Held direction", "axis", Patterns::Anything(),
+                    "Direction the held groups may not move along: 'axis' for the body's own "
+                    "(a cylinder's axis, a plane's normal), or three numbers x,y,z (-).");
+  prm.declare_entry("Fixed groups", "", Patterns::Anything(),
+                    "Comma-separated vertex groups that do not move at all.");
   prm.leave_subsection();
+}
+
+void declare_measurements(ParameterHandler& prm) {
+  HandlerTree tree(prm);
+  Subsection in(tree, "Measurements");
+  const auto& registry = measurement_kinds();
+  tree.declare_multiple_selection(
+      "List", "cylinder theory, angular profile", registry.names_joined("|"),
+      "Comma-separated measurements taken at every load step beside the generic pressure "
+      "summary of pressure.csv; the first that knows a closed form gives p_theory_Pa. " +
+          registry.descriptions());
+  registry.declare_parts(tree);
 }
 
 void declare_contact(ParameterHandler& prm) {
@@ -104,14 +188,12 @@ void declare_contact(ParameterHandler& prm) {
 
 void declare_protocol(ParameterHandler& prm) {
   prm.enter_subsection("Protocol");
-  prm.declare_entry("End condition", "free", Patterns::Selection("free|held"),
-                    "free: no axial force at the tube's ends (the paper's assumption); held: "
-                    "the end rows keep their axial position (axial stretch 1).");
   prm.declare_entry("Final alpha", "1.8", Patterns::Double(0),
-                    "The last load step's deformation ratio alpha = r / R0 (-).");
+                    "The body's morph parameter alpha at the last load step (-): for a cylinder "
+                    "its radius over the tube's rest radius, r / R0; a plane ignores it.");
   prm.declare_entry("Alpha increment", "0.05", Patterns::Double(1e-4),
-                    "After settling on the initial radius, the cylinder grows through every "
-                    "multiple of this alpha up to the final one (-).");
+                    "After settling on the initial body, alpha goes through every multiple of "
+                    "this increment up to the final one (-).");
   prm.declare_entry("Gravity while settling", "false", Patterns::Bool(),
                     "Gravity on while the garment first settles (the paper: it speeds settling).");
   prm.declare_entry("Gravity while measuring", "false", Patterns::Bool(),
@@ -129,8 +211,12 @@ void declare_pressure(ParameterHandler& prm) {
                     "adjacent triangle; balances forces), mixed voronoi (Meyer et al. 2003; also "
                     "balances forces, smoother on irregular meshes) or adjacent triangles (the "
                     "paper's Section 2.2: reads a third of the pressure).");
-  prm.declare_entry("Angle bins", "36", Patterns::Integer(1, 3600),
-                    "Sectors round the cylinder for pressure_theta.csv (-).");
+  prm.declare_entry("Definition", "contact traction",
+                    Patterns::Selection("contact traction|garment force (paper)"),
+                    "The normal force read as pressure: contact traction (the body's force on "
+                    "the garment along the body's normal: what a sensor on the skin reads) or "
+                    "garment force (paper) (the garment's own force along its normal, the "
+                    "paper's Section 2.2; it misses the weight the body carries).");
   prm.leave_subsection();
 }
 
@@ -148,9 +234,12 @@ void declare_case_parameters(ParameterHandler& prm) {
   declare_garment(prm);
   declare_material(prm);
   declare_body(prm);
+  declare_placement(prm);
+  declare_constraints(prm);
   declare_contact(prm);
   declare_protocol(prm);
   declare_pressure(prm);
+  declare_measurements(prm);
   declare_output(prm);
   const BackendRegistry& registry = backend_registry();
   prm.enter_subsection("Solver");
@@ -167,11 +256,11 @@ namespace {
 
 CaseParameters parse_case_parameters(ParameterHandler& prm) {
   CaseParameters c;
+  HandlerTree tree(prm);
   prm.enter_subsection("Garment");
+  c.garment.kind = prm.get("Kind");
+  c.garment.make = garment_kinds().parse_part(tree, c.garment.kind);
   c.garment.name = prm.get("Name");
-  c.garment.panel_width_m = prm.get_double("Panel width");
-  c.garment.panel_height_m = prm.get_double("Panel height");
-  c.garment.n_panels = prm.get_integer("Number of panels");
   c.garment.mesh_scale = prm.get_double("Mesh scale");
   c.garment.spacing.along_x_m = prm.get_double("Edge length weft") * c.garment.mesh_scale;
   c.garment.spacing.along_y_m = prm.get_double("Edge length warp") * c.garment.mesh_scale;
@@ -189,19 +278,36 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   prm.leave_subsection();
 
   prm.enter_subsection("Body");
-  c.body.initial_radius_m = prm.get_double("Initial radius");
-  c.body.axis_point_m = parse_vec3(prm.get("Axis point"));
-  c.body.axis = parse_vec3(prm.get("Axis"));
-  c.body.display_height_m = prm.get_double("Display height");
+  c.body.kind = prm.get("Kind");
+  c.body.make = body_kinds().parse_part(tree, c.body.kind);
   prm.leave_subsection();
+
+  prm.enter_subsection("Placement");
+  c.placement.kind = prm.get("Kind");
+  c.placement.place = placement_kinds().parse_part(tree, c.placement.kind);
+  prm.leave_subsection();
+
+  prm.enter_subsection("Constraints");
+  c.constraints.held_groups = tree.get_list("Held groups");
+  c.constraints.fixed_groups = tree.get_list("Fixed groups");
+  const std::string held_direction = prm.get("Held direction");
+  prm.leave_subsection();
+  if (held_direction != "axis") {
+    try {
+      c.constraints.held_direction = parse_vec3(held_direction);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("Constraints/Held direction = '" + held_direction +
+                                  "': expected 'axis' or three numbers x,y,z");
+    }
+    if (!(c.constraints.held_direction->norm() > 0))
+      throw std::invalid_argument("Constraints/Held direction must not be zero");
+  }
 
   prm.enter_subsection("Contact");
   c.penalty_factor = prm.get_double("Penalty factor");
   prm.leave_subsection();
 
   prm.enter_subsection("Protocol");
-  c.protocol.end_condition =
-      prm.get("End condition") == "held" ? EndCondition::held_ends : EndCondition::free_ends;
   c.protocol.final_alpha = prm.get_double("Final alpha");
   c.protocol.alpha_increment = prm.get_double("Alpha increment");
   c.protocol.gravity_while_settling = prm.get_bool("Gravity while settling");
@@ -215,7 +321,14 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   c.pressure.vertex_area = area == "barycentric"     ? VertexAreaDefinition::barycentric
                            : area == "mixed voronoi" ? VertexAreaDefinition::mixed_voronoi
                                                      : VertexAreaDefinition::adjacent_triangles;
-  c.pressure.angle_bins = prm.get_integer("Angle bins");
+  c.pressure.definition = prm.get("Definition") == "contact traction"
+                             ? PressureDefinition::contact_traction
+                             : PressureDefinition::garment_force;
+  prm.leave_subsection();
+
+  prm.enter_subsection("Measurements");
+  for (const std::string& kind : tree.get_list("List"))
+    c.measurements.push_back({kind, measurement_kinds().parse_part(tree, kind)});
   prm.leave_subsection();
 
   prm.enter_subsection("Output");
@@ -230,9 +343,7 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   auto require = [](bool ok, const std::string& message) {
     if (!ok) throw std::invalid_argument(message);
   };
-  require(c.body.axis.norm() > 0, "Body/Axis must not be zero");
   require(c.protocol.up.norm() > 0, "Protocol/Up must not be zero");
-  require(c.body.initial_radius_m > 0, "Body/Initial radius must be positive (m)");
   c.fabric.validate();
   return c;
 }

@@ -1,14 +1,20 @@
-// Everything a case file (.prm) says, as plain structs. The deal.II ParameterHandler that
+// Everything a case file (.prm) says, as plain structs: the scenario's parts (garment, body,
+// placement, constraints, load steps, measurements; docs/scenarios.md) and the solver's. The deal.II ParameterHandler that
 // reads them stays inside case_parameters.cc.
 #pragma once
 
+#include "cases/measurement.h"
+#include "cases/scenario_body.h"
+#include "contact/pressure_extractor.h"
 #include "core/backend.h"
 #include "core/material.h"
 #include "core/mesh_geometry.h"
 #include "core/rectangle_panel.h"
 
+#include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,35 +24,58 @@ class ParameterHandler;
 
 namespace tightfit {
 
+// What each scenario part's parser returns (cases/part_registry.h): its settings, ready to
+// build the part. Plain functions, so that a case's parameters can be copied (a convergence
+// study builds one scenario per mesh level).
+using GarmentMaker = std::function<Garment(const std::string& name, const MeshSpacing& spacing)>;
+using BodyMaker = std::function<std::unique_ptr<ScenarioBody>(const Garment& garment)>;
+// The welded start positions of the garment on the scenario's body, m.
+using PlacementMaker = std::function<std::vector<Vec3>(const Scenario& scenario)>;
+using MeasurementMaker = std::function<std::unique_ptr<Measurement>()>;
+
 struct GarmentSettings {
+  std::string kind = "tube";
   std::string name = "4 5T";
-  double panel_width_m = 0.1878;  // round the tube, along the weft
-  double panel_height_m = 0.24;   // along the tube, the warp
-  int n_panels = 2;
   MeshSpacing spacing;      // Edge length weft / warp
   double mesh_scale = 1.0;  // multiplies both edge lengths (convergence studies)
+  GarmentMaker make;
 };
 
 struct BodySettings {
-  Vec3 axis_point_m = Vec3::Zero();
-  Vec3 axis = Vec3::UnitZ();
-  double initial_radius_m = 0.05;  // the paper's cylinder (Table 3)
-  double display_height_m = 0.24;
+  std::string kind = "cylinder";
+  BodyMaker make;
+};
+
+struct PlacementSettings {
+  std::string kind = "tube round cylinder";
+  PlacementMaker place;
+};
+
+// Constraints on the garment's named vertex groups (SimulationMesh::vertex_groups).
+struct ConstraintSettings {
+  std::vector<std::string> held_groups;  // held along held_direction
+  // Unset: along the body's own axis (ScenarioBody::axis()).
+  std::optional<Vec3> held_direction;
+  std::vector<std::string> fixed_groups;
 };
 
 struct ProtocolSettings {
-  EndCondition end_condition = EndCondition::free_ends;
-  double final_alpha = 1.8;
+  double final_alpha = 1.8;  // the body's morph parameter at the last load step
   double alpha_increment = 0.05;
   bool gravity_while_settling = false;
   bool gravity_while_measuring = false;
-  double gravity_m_per_s2 = 9.81;  // along -Body/Up
+  double gravity_m_per_s2 = 9.81;  // along -Up
   Vec3 up = Vec3::UnitZ();
 };
 
 struct PressureSettings {
   VertexAreaDefinition vertex_area = VertexAreaDefinition::barycentric;
-  int angle_bins = 36;
+  PressureDefinition definition = PressureDefinition::contact_traction;
+};
+
+struct NamedMeasurement {
+  std::string kind;
+  MeasurementMaker make;
 };
 
 struct OutputSettings {
@@ -67,9 +96,12 @@ struct CaseParameters {
   std::string law = "linear biot";
   FabricParameters fabric;
   BodySettings body;
+  PlacementSettings placement;
+  ConstraintSettings constraints;
   double penalty_factor = 100.0;
   ProtocolSettings protocol;
   PressureSettings pressure;
+  std::vector<NamedMeasurement> measurements;
   OutputSettings output;
   std::string backend = "massspring";
 };

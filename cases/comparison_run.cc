@@ -27,7 +27,7 @@ double largest_vertex_difference(const StepMeasurement& a, const StepMeasurement
 
 }  // namespace
 
-ComparisonResult run_comparison(CylinderSetup& setup, const std::string& first_name,
+ComparisonResult run_comparison(Scenario& setup, const std::string& first_name,
                                 const BackendFactory& make_first, const std::string& second_name,
                                 const BackendFactory& make_second, const std::string& output_dir,
                                 std::ostream& log) {
@@ -35,11 +35,11 @@ ComparisonResult run_comparison(CylinderSetup& setup, const std::string& first_n
   const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
   ComparisonResult result;
   log << "Backend " << first_name << ":\n";
-  result.first = run_cylinder_case(setup, make_first, path(first_name), log);
+  result.first = run_scenario(setup, make_first, path(first_name), log);
   log << "Backend " << second_name << ":\n";
-  result.second = run_cylinder_case(setup, make_second, path(second_name), log);
+  result.second = run_scenario(setup, make_second, path(second_name), log);
 
-  // As in run_cylinder_case: the first rank writes the table and the collection, every rank
+  // As in run_scenario: the first rank writes the table and the collection, every rank
   // its piece of the difference surface when there are several.
   const OutputSettings& output = setup.parameters.output;
   const bool write_table = output.write_files && output.is_first_rank();

@@ -1,7 +1,7 @@
 // Cross-backend comparison: one case, one mesh, two backends, step by step.
 #pragma once
 
-#include "cases/cylinder_run.h"
+#include "cases/scenario_run.h"
 
 #include <iosfwd>
 #include <string>
@@ -19,7 +19,7 @@ struct ComparisonResult {
 // p_mean_Pa_<second>, p_theory_Pa, rel_diff = (second - first) / first, ...) and, with VTU
 // output on, DIR/difference_NNNN.vtu + difference.pvd: the second backend's garment with the
 // per-vertex pressure difference (same mesh, so vertex by vertex).
-ComparisonResult run_comparison(CylinderSetup& setup, const std::string& first_name,
+ComparisonResult run_comparison(Scenario& setup, const std::string& first_name,
                                 const BackendFactory& make_first, const std::string& second_name,
                                 const BackendFactory& make_second, const std::string& output_dir,
                                 std::ostream& log);

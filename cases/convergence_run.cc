@@ -1,6 +1,6 @@
 #include "cases/convergence_run.h"
 
-#include "cases/cylinder_setup.h"
+#include "cases/scenario.h"
 #include "io/csv_table.h"
 
 #include <algorithm>
@@ -33,7 +33,7 @@ std::vector<std::string> summary_columns() {
           "error_order"};
 }
 
-// A closed form to measure the error against: the cylinder's, where it predicts contact.
+// A closed form to measure the error against: the scenario's, where it predicts contact.
 bool has_closed_form(double p_theory_Pa) {
   return std::isfinite(p_theory_Pa) && p_theory_Pa > 0;
 }
@@ -61,7 +61,7 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
   BackendConvergence study;
   study.backend = backend.name;
   for (int level = 0; level < n_levels; ++level) {
-    auto setup = make_cylinder_setup(level_parameters(parameters, level));
+    auto setup = make_scenario(level_parameters(parameters, level));
     ConvergenceLevel l;
     l.level = level;
     l.mesh_scale = setup->parameters.garment.mesh_scale;
@@ -72,7 +72,7 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
     const std::string dir =
         (fs::path(output_dir) / backend.name / ("level_" + std::to_string(level))).string();
     try {
-      l.run = run_cylinder_case(*setup, backend.create, dir, log);
+      l.run = run_scenario(*setup, backend.create, dir, log);
     } catch (const std::exception& e) {
       // A backend that cannot even start (bad subsection, failed allocation) stops its own
       // study, not the other backends'.
@@ -151,10 +151,10 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
   // Check every level's setup before running any, so a bad mesh scale does not surface after
   // the coarse levels have run for minutes.
   for (int level = 0; level < n_levels; ++level)
-    make_cylinder_setup(level_parameters(parameters, level));
+    make_scenario(level_parameters(parameters, level));
 
   // Under MPI every rank runs the study (the FE solves are distributed); the first writes the
-  // tables, as run_cylinder_case does for each level's own.
+  // tables, as run_scenario does for each level's own.
   std::optional<CsvTable> table, summary;
   if (parameters.output.write_files && parameters.output.is_first_rank()) {
     fs::create_directories(output_dir);

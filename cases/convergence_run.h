@@ -1,4 +1,4 @@
-// Mesh-convergence study of a cylinder case (the paper's Section 7.4, Figure 14): the case
+// Mesh-convergence study of a case (the paper's Section 7.4, Figure 14): the case
 // run at successively halved edge lengths on each backend, with the observed order, the
 // Richardson-extrapolated pressure and Roache's GCI of every load step.
 //
@@ -12,7 +12,7 @@
 //   n_vertices   welded vertices of the garment mesh
 //   edge_m       mean rest edge length of the mesh, m
 //   step         load step (0 is the settling step)
-//   alpha        r / R0, the cylinder radius over the garment's rest radius
+//   alpha        the body's morph parameter (a cylinder: r / R0)
 //   p_mean_Pa    mean contact pressure over the vertices in contact, Pa
 //   p_theory_Pa  closed form of the case's law and end condition, Pa
 //   rel_error    (p_mean - p_theory) / p_theory; empty where p_theory is 0
@@ -42,7 +42,7 @@
 
 #include "cases/case_parameters.h"
 #include "cases/convergence_analysis.h"
-#include "cases/cylinder_run.h"
+#include "cases/scenario_run.h"
 
 #include <iosfwd>
 #include <string>

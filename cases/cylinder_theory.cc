@@ -54,4 +54,13 @@ double paper_eq7_pressure_Pa(double hoop_stiffness_N_per_m, double rest_radius_m
   return hoop_stiffness_N_per_m * (1.0 - 1.0 / alpha) / rest_radius_m;
 }
 
+double tube_weight_per_area_Pa(double areal_density_kg_per_m2, double gravity_across_m_per_s2,
+                               double alpha, double axial_stretch) {
+  return areal_density_kg_per_m2 * gravity_across_m_per_s2 / (alpha * axial_stretch);
+}
+
+double gravity_top_minus_bottom_Pa(double weight_per_area_Pa, bool contact_traction) {
+  return (contact_traction ? 4.0 : 2.0) * weight_per_area_Pa;
+}
+
 }  // namespace tightfit

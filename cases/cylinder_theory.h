@@ -2,12 +2,17 @@
 // cylinder-theory.md): the reference every backend is verified against.
 #pragma once
 
-#include "core/backend.h"
 #include "core/material.h"
 
 #include <string>
 
 namespace tightfit {
+
+// Cylinder-theory.md's two end conditions for a tube.
+enum class EndCondition {
+  free_ends,  // no axial force at the tube's ends (the paper's assumption)
+  held_ends,  // the end vertices keep their axial coordinate (axial stretch 1)
+};
 
 // Pressure per current contact area, Pa, of a tube of rest radius R0 on a cylinder of radius
 // alpha R0, for the law called `law_name` (make_material_law's names) and the end condition.
@@ -25,5 +30,17 @@ double axial_stretch(const std::string& law_name, EndCondition ends, const Fabri
                      double alpha);
 
 const char* to_string(EndCondition ends);
+
+// A tube on a horizontal frictionless cylinder under gravity (docs/model.md, "A tube on a
+// cylinder under gravity"). Its weight per unit current area, Pa: the rest areal density spread
+// over the stretched area, w = rho_A g / (alpha b), with g the component of gravity across the
+// axis and b the axial stretch.
+double tube_weight_per_area_Pa(double areal_density_kg_per_m2, double gravity_across_m_per_s2,
+                               double alpha, double axial_stretch);
+// With theta the angle from the top, the pressure reads p(theta) = p0 + k w cos(theta), p0 the
+// closed form without gravity: k = 2 for the contact traction (the weight pressing at the top
+// and hanging at the bottom, plus the hoop tension it changes), k = 1 for the garment's own
+// force (the paper's definition, which sees the tension alone). Top minus bottom: 2 k w.
+double gravity_top_minus_bottom_Pa(double weight_per_area_Pa, bool contact_traction);
 
 }  // namespace tightfit

@@ -1,34 +1,48 @@
 #include "cases/step_measurement.h"
 
-#include "cases/cylinder_theory.h"
-
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace tightfit {
 
-StepMeasurement solve_and_measure(CylinderSetup& setup, Backend& backend, int step) {
-  const LoadStep load = setup.prepare_step(step);
+Measurements make_measurements(const CaseParameters& parameters) {
+  Measurements measurements;
+  for (const NamedMeasurement& m : parameters.measurements) measurements.push_back(m.make());
+  return measurements;
+}
+
+std::vector<std::string> measurement_columns(const Measurements& measurements) {
+  std::vector<std::string> columns;
+  for (const auto& m : measurements)
+    for (const std::string& c : m->columns()) columns.push_back(c);
+  return columns;
+}
+
+StepMeasurement solve_and_measure(Scenario& scenario, Backend& backend, int step,
+                                  const Measurements& measurements) {
+  const LoadStep load = scenario.prepare_step(step);
   StepMeasurement m;
   m.step = step;
   m.alpha = load.alpha;
-  m.radius_m = setup.body->radius_m();
   m.report = backend.solve(load);
   m.state = backend.state();
-  m.field = extract_pressure(setup.mesh.triangles, m.state, setup.parameters.pressure.vertex_area,
-                             setup.body.get());
+  const PressureSettings& pressure = scenario.parameters.pressure;
+  m.field = extract_pressure(scenario.mesh.triangles, m.state, pressure.vertex_area,
+                             &scenario.body->body(), pressure.definition);
   m.summary = summarize(m.field);
 
-  const CaseParameters& c = setup.parameters;
-  m.p_theory_Pa = closed_form_pressure_Pa(c.law, c.protocol.end_condition, c.fabric,
-                                          setup.rest_radius_m, m.alpha);
-  m.p_eq7_Pa = paper_eq7_pressure_Pa(c.fabric.stiffness_weft_N_per_m, setup.rest_radius_m, m.alpha);
-  m.rel_error = m.p_theory_Pa > 0 ? (m.p_mean_Pa() - m.p_theory_Pa) / m.p_theory_Pa
-                                  : std::numeric_limits<double>::quiet_NaN();
+  for (const auto& measurement : measurements) {
+    const std::optional<double> reference = measurement->reference_pressure_Pa(scenario, m);
+    if (!reference) continue;
+    m.p_theory_Pa = *reference;
+    if (m.p_theory_Pa > 0) m.rel_error = (m.p_mean_Pa() - m.p_theory_Pa) / m.p_theory_Pa;
+    break;
+  }
+  for (const auto& measurement : measurements)
+    for (double value : measurement->values(scenario, m)) m.extra_values.push_back(value);
 
-  // A tube stretched over the body must touch it; anywhere else it slipped off.
-  if (m.alpha > 1.001 && m.summary.n_contact == 0) {
+  // A garment stretched over the body must touch it; anywhere else it slipped off.
+  if (scenario.body->must_touch(m.alpha) && m.summary.n_contact == 0) {
     std::ostringstream message;
     message << "load step " << step << " (alpha " << m.alpha
             << "): the garment touches the body nowhere although it is smaller than the body; "

@@ -1,30 +1,44 @@
 // What one load step measured: the backend's state, the shared extractor's pressure field and
-// its summary beside the closed forms.
+// its summary, the scenario's closed form where it has one, and the values of the columns its
+// measurements add to pressure.csv.
 #pragma once
 
-#include "cases/cylinder_setup.h"
+#include "cases/measurement.h"
+#include "cases/scenario.h"
 #include "contact/pressure_extractor.h"
+
+#include <limits>
+#include <memory>
+#include <vector>
 
 namespace tightfit {
 
 struct StepMeasurement {
   int step = 0;
-  double alpha = 0.0;
-  double radius_m = 0.0;
+  double alpha = 0.0;  // the body's morph parameter
   StepReport report;
   SurfaceState state;
   PressureField field;
   PressureSummary summary;
-  double p_theory_Pa = 0.0;  // the closed form for the case's law and end condition
-  double p_eq7_Pa = 0.0;     // the paper's Eq. 7 with the hoop (weft) stiffness
-  double rel_error = 0.0;    // (p_mean - p_theory) / p_theory; NaN where p_theory is 0
+  // The closed form of the scenario's reference measurement; NaN where there is none.
+  double p_theory_Pa = std::numeric_limits<double>::quiet_NaN();
+  double rel_error = std::numeric_limits<double>::quiet_NaN();  // (p_mean - p_theory) / p_theory
+  std::vector<double> extra_values;  // the measurements' columns (measurement_columns), in order
 
   double p_mean_Pa() const { return summary.mean_Pa; }
 };
 
-// Solves load step `step` of `setup` with `backend` and measures it. Throws SolverError when
-// the backend fails, or when the garment should press on the body (alpha > 1) but touches it
-// nowhere.
-StepMeasurement solve_and_measure(CylinderSetup& setup, Backend& backend, int step);
+using Measurements = std::vector<std::unique_ptr<Measurement>>;
+
+// The measurements the case lists (Measurements/List), fresh for one run.
+Measurements make_measurements(const CaseParameters& parameters);
+// The columns they add to pressure.csv, in order.
+std::vector<std::string> measurement_columns(const Measurements& measurements);
+
+// Solves load step `step` of `scenario` with `backend` and measures it. Throws SolverError
+// when the backend fails, or when the garment must touch the body (ScenarioBody::must_touch)
+// but touches it nowhere.
+StepMeasurement solve_and_measure(Scenario& scenario, Backend& backend, int step,
+                                  const Measurements& measurements);
 
 }  // namespace tightfit

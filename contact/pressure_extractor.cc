@@ -6,30 +6,51 @@
 
 namespace tightfit {
 
+const char* to_string(PressureDefinition definition) {
+  return definition == PressureDefinition::contact_traction ? "contact traction"
+                                                            : "garment force (paper)";
+}
+
 PressureField extract_pressure(const std::vector<Triangle>& triangles, const SurfaceState& state,
-                               VertexAreaDefinition area_definition, const RigidBody* body) {
+                               VertexAreaDefinition area_definition, const RigidBody* body,
+                               PressureDefinition definition) {
   const int n = static_cast<int>(state.size());
   PressureField field;
   field.area_definition = area_definition;
+  field.definition = definition;
   field.vertex_area_m2 = vertex_areas(triangles, state.positions_m, n, area_definition);
   field.normal = vertex_normals(triangles, state.positions_m, n);
   field.contact = state.in_contact;
   field.contact.resize(n, 0);
   field.pressure_Pa.assign(n, 0.0);
   field.normal_force_N.assign(n, 0.0);
+  field.friction_traction_Pa.assign(n, 0.0);
+  const bool has_contact_forces = static_cast<int>(state.contact_force_N.size()) == n;
   for (int v = 0; v < n; ++v) {
     Vec3& normal = field.normal[v];
-    if (body && normal.dot(body->query(state.positions_m[v]).outward_normal) < 0) normal = -normal;
-    field.normal_force_N[v] = -state.internal_force_N[v].dot(normal);
-    if (field.vertex_area_m2[v] > 0)
-      field.pressure_Pa[v] = field.normal_force_N[v] / field.vertex_area_m2[v];
+    Vec3 body_normal = normal;
+    if (body) {
+      body_normal = body->query(state.positions_m[v]).outward_normal;
+      if (normal.dot(body_normal) < 0) normal = -normal;
+    }
+    const double area = field.vertex_area_m2[v];
+    if (has_contact_forces) {
+      const Vec3& contact = state.contact_force_N[v];
+      const Vec3 tangential = contact - contact.dot(body_normal) * body_normal;
+      if (area > 0) field.friction_traction_Pa[v] = tangential.norm() / area;
+    }
+    if (definition == PressureDefinition::contact_traction)
+      field.normal_force_N[v] = has_contact_forces ? state.contact_force_N[v].dot(body_normal) : 0;
+    else
+      field.normal_force_N[v] = -state.internal_force_N[v].dot(normal);
+    if (area > 0) field.pressure_Pa[v] = field.normal_force_N[v] / area;
   }
   return field;
 }
 
 PressureSummary summarize(const PressureField& field) {
   PressureSummary s;
-  double sum = 0.0, sum_squares = 0.0;
+  double sum = 0.0;
   s.min_Pa = std::numeric_limits<double>::infinity();
   s.max_Pa = -std::numeric_limits<double>::infinity();
   for (std::size_t v = 0; v < field.pressure_Pa.size(); ++v) {
@@ -37,7 +58,6 @@ PressureSummary summarize(const PressureField& field) {
     const double p = field.pressure_Pa[v];
     ++s.n_contact;
     sum += p;
-    sum_squares += p * p;
     s.min_Pa = std::min(s.min_Pa, p);
     s.max_Pa = std::max(s.max_Pa, p);
   }
@@ -48,7 +68,12 @@ PressureSummary summarize(const PressureField& field) {
     return s;
   }
   s.mean_Pa = sum / s.n_contact;
-  s.std_Pa = std::sqrt(std::max(0.0, sum_squares / s.n_contact - s.mean_Pa * s.mean_Pa));
+  // Two passes: the spread of a nearly uniform field (the contact traction of a tube) is far
+  // below the mean, where E[p^2] - E[p]^2 would leave only round-off.
+  double sum_squares = 0.0;
+  for (std::size_t v = 0; v < field.pressure_Pa.size(); ++v)
+    if (field.contact[v]) sum_squares += (field.pressure_Pa[v] - s.mean_Pa) * (field.pressure_Pa[v] - s.mean_Pa);
+  s.std_Pa = std::sqrt(sum_squares / s.n_contact);
   return s;
 }
 

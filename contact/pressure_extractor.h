@@ -1,8 +1,15 @@
-// The pressure extractor shared by both backends (the paper's Section 2.2).
+// The pressure extractor shared by both backends (docs/model.md, "Pressure").
 //
-// At each vertex: the garment's own force along the vertex normal, divided by the vertex area,
-// p_v = -(f_v . n_v) / A_v, with n_v pointing away from the body, so that a garment pressing
-// onto the body reads a positive pressure. At equilibrium f_v balances the contact force.
+// At each vertex a normal force divided by the vertex area, p_v = F_v / A_v, in one of two
+// definitions:
+//   - contact traction (the default): what a sensor on the skin reads, the body's force on the
+//     garment along the body's outward normal, F_v = c_v . n_body;
+//   - garment force (the paper's Section 2.2): the garment's own force along the vertex normal
+//     n_v (pointing away from the body), F_v = -(f_v . n_v).
+// Without gravity the two agree at equilibrium (f_v balances c_v); with gravity the garment's
+// weight presses where it lies on the body and hangs where it lies below, which only the
+// contact traction reads. The tangential part of the contact force over the area is the
+// friction traction (zero on the frictionless bodies of today).
 #pragma once
 
 #include "contact/cylinder.h"
@@ -14,18 +21,30 @@
 
 namespace tightfit {
 
+enum class PressureDefinition {
+  contact_traction,  // the contact force along the body's normal (what a skin sensor reads)
+  garment_force,     // the garment's own force along its normal (the paper's Section 2.2)
+};
+const char* to_string(PressureDefinition definition);
+
 struct PressureField {
   VertexAreaDefinition area_definition = VertexAreaDefinition::barycentric;
+  PressureDefinition definition = PressureDefinition::contact_traction;
   std::vector<double> pressure_Pa;
-  std::vector<double> normal_force_N;  // -(f . n): the force pressing onto the body
+  std::vector<double> normal_force_N;  // the force pressing onto the body, by the definition
+  // |tangential contact force| / vertex area, Pa: the friction traction.
+  std::vector<double> friction_traction_Pa;
   std::vector<double> vertex_area_m2;
   std::vector<Vec3> normal;  // unit, pointing away from the body
   std::vector<char> contact;
 };
 
-// `body` orients the normals (away from it); with no body the triangles' winding does.
-PressureField extract_pressure(const std::vector<Triangle>& triangles, const SurfaceState& state,
-                               VertexAreaDefinition area_definition, const RigidBody* body);
+// `body` orients the normals (away from it) and gives the contact traction its normal; with no
+// body the triangles' winding does both.
+PressureField extract_pressure(
+    const std::vector<Triangle>& triangles, const SurfaceState& state,
+    VertexAreaDefinition area_definition, const RigidBody* body,
+    PressureDefinition definition = PressureDefinition::contact_traction);
 
 struct PressureSummary {
   int n_contact = 0;

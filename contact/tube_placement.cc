@@ -1,5 +1,7 @@
 #include "contact/tube_placement.h"
 
+#include "core/tube_garment.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,7 +10,8 @@ namespace tightfit {
 
 std::vector<Vec3> place_tube_round_cylinder(const Garment& garment, const SimulationMesh& mesh,
                                             const Cylinder& cylinder, double radius_m) {
-  if (!(garment.ring_circumference_m > 0))
+  const double circumference_m = ring_circumference_m(garment);
+  if (!(circumference_m > 0))
     throw std::invalid_argument("garment '" + garment.name + "' is not a closed tube");
   double v_min = mesh.layout_positions_m.front().y(), v_max = v_min;
   for (const Vec2& p : mesh.layout_positions_m) {
@@ -20,7 +23,7 @@ std::vector<Vec3> place_tube_round_cylinder(const Garment& garment, const Simula
   std::vector<Vec3> x(mesh.n_vertices);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
     const Vec2& p = mesh.layout_positions_m[u];
-    const double angle = 2.0 * M_PI * p.x() / garment.ring_circumference_m;
+    const double angle = 2.0 * M_PI * p.x() / circumference_m;
     x[mesh.welded_index[u]] = cylinder.point_on_axis_m() +
                               (p.y() - 0.5 * (v_min + v_max)) * cylinder.axis() +
                               radius_m * (std::cos(angle) * e1 + std::sin(angle) * e2);

@@ -15,10 +15,17 @@ namespace tightfit {
 
 class RigidBody;
 
-// Cylinder-theory.md's two end conditions for a tube.
-enum class EndCondition {
-  free_ends,  // no axial force at the tube's ends (the paper's assumption)
-  held_ends,  // the end vertices keep their axial coordinate (axial stretch 1)
+// A constraint on a named set of welded vertices (a SimulationMesh::vertex_groups entry such
+// as "bottom" or "top"): the case file's Constraints subsection.
+struct VertexConstraint {
+  enum class Kind {
+    held_along_direction,  // the vertices keep their coordinate along `direction`
+    fixed,                 // the vertices do not move at all
+  };
+  Kind kind = Kind::held_along_direction;
+  std::string group;          // the vertex group's name, for messages
+  std::vector<int> vertices;  // welded vertex indices
+  Vec3 direction = Vec3::UnitZ();  // held_along_direction only
 };
 
 // What is simulated: shared by both backends, owned by the caller, alive while they run.
@@ -30,17 +37,15 @@ struct Problem {
   const RigidBody* body = nullptr;
   // Penalty contact: pressure per unit penetration depth, Pa/m.
   double contact_stiffness_Pa_per_m = 0.0;
-  // Held ends: these vertices cannot move along held_direction.
-  EndCondition end_condition = EndCondition::free_ends;
-  std::vector<int> held_vertices;
-  Vec3 held_direction = Vec3::UnitZ();
+  // Vertices held along a direction or fixed; none for a garment free on the body.
+  std::vector<VertexConstraint> constraints;
   // Gravity when a load step turns it on, m/s^2.
   Vec3 gravity_m_per_s2 = Vec3(0.0, 0.0, -9.81);
 };
 
 struct LoadStep {
   int index = 0;
-  double alpha = 1.0;  // the body's deformation ratio, for messages
+  double alpha = 1.0;  // the body's morph parameter (a cylinder's r / R0), for messages
   bool gravity_on = false;
 };
 

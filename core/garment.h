@@ -44,8 +44,8 @@ struct Garment {
   std::string name;
   std::vector<Panel> panels;
   std::vector<Seam> seams;
-  // Circumference of the garment when laid as a closed ring (a tube), metres; zero otherwise.
-  double ring_circumference_m = 0.0;
+  // One line for the case header: what the garment is cut from and how it is sewn.
+  std::string description;
 };
 
 // The garment with its seams closed: every seam vertex pair is one vertex.

@@ -1,5 +1,6 @@
 #include "core/tube_garment.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace tightfit {
@@ -9,7 +10,6 @@ Garment make_tube_garment(const std::string& name, double panel_width_m, double 
   if (n_panels < 1) throw std::invalid_argument("Garment/Number of panels must be at least 1");
   Garment garment;
   garment.name = name;
-  garment.ring_circumference_m = n_panels * panel_width_m;
   for (int p = 0; p < n_panels; ++p) {
     Panel panel = make_rectangle_panel(name + " panel " + std::to_string(p + 1), panel_width_m,
                                        panel_height_m, spacing);
@@ -18,6 +18,34 @@ Garment make_tube_garment(const std::string& name, double panel_width_m, double 
     garment.seams.push_back({p, "right", (p + 1) % n_panels, "left"});
   }
   return garment;
+}
+
+double ring_circumference_m(const Garment& garment) {
+  const int n = static_cast<int>(garment.panels.size());
+  if (n == 0 || static_cast<int>(garment.seams.size()) != n) return 0.0;
+  // Each panel's right edge sewn to the next one's left edge, round the whole garment.
+  std::vector<int> next(n, -1);
+  for (const Seam& seam : garment.seams) {
+    if (seam.edge_a != "right" || seam.edge_b != "left") return 0.0;
+    if (seam.panel_a < 0 || seam.panel_a >= n || next[seam.panel_a] >= 0) return 0.0;
+    next[seam.panel_a] = seam.panel_b;
+  }
+  int panel = 0;
+  double circumference = 0.0;
+  for (int visited = 0; visited < n; ++visited) {
+    if (panel < 0 || panel >= n || (visited > 0 && panel == 0)) return 0.0;
+    double x_min = 0.0, x_max = 0.0;
+    const auto& rest = garment.panels[panel].rest_positions_m;
+    if (!rest.empty()) {
+      const auto [lo, hi] = std::minmax_element(
+          rest.begin(), rest.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x(); });
+      x_min = lo->x();
+      x_max = hi->x();
+    }
+    circumference += x_max - x_min;
+    panel = next[panel];
+  }
+  return panel == 0 ? circumference : 0.0;
 }
 
 }  // namespace tightfit

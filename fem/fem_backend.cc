@@ -5,6 +5,7 @@
 
 #include "contact/cylinder.h"
 #include "contact/nodal_contact.h"
+#include "core/constrained_directions.h"
 #include "core/mesh_geometry.h"
 #include "fem/membrane_kernel.h"
 #include "fem/petsc_linear_solver.h"
@@ -241,7 +242,7 @@ class FemBackend::Implementation {
   std::vector<std::vector<DofTriple>> node_copies_;
   std::vector<std::array<int, 2>> edge_ends_;      // welded edge -> its two welded vertices
   std::map<std::array<int, 2>, int> edge_index_;   // sorted welded vertex pair -> welded edge
-  std::vector<char> node_held_;                    // held ends: the node keeps its axial place
+  ConstrainedDirections node_constrained_;  // the Problem's constraints at every node
   std::vector<std::array<int, 3>> cell_vertices_;  // per cell, its corners' welded vertices
   // The linear hat of each cell corner at the quadrature points [q][v], and per cell the ratio
   // of grain to layout area (quadrature weights are layout areas).
@@ -419,14 +420,10 @@ void FemBackend::Implementation::build_nodes() {
   }
   for (auto& copies : midpoint_copies) node_copies_.push_back(std::move(copies));
 
-  // Held ends hold the end rows' vertices and the midpoints of the edges between them.
-  node_held_.assign(n_nodes(), 0);
-  if (problem_.end_condition == EndCondition::held_ends) {
-    for (int w : problem_.held_vertices) node_held_[w] = 1;
-    for (std::size_t e = 0; e < edge_ends_.size(); ++e)
-      if (node_held_[edge_ends_[e][0]] && node_held_[edge_ends_[e][1]])
-        node_held_[mesh.n_vertices + e] = 1;
-  }
+  // Constrained vertices keep their constraints; an edge midpoint is constrained along what
+  // both its ends are.
+  node_constrained_ = ConstrainedDirections(problem_.constraints, mesh.n_vertices);
+  for (const auto& ends : edge_ends_) node_constrained_.add_shared(ends[0], ends[1]);
 }
 
 // Nodal contact acts at every node with the penalty k w_k, k = beta Y / h^2 (Pa/m) and w_k a
@@ -540,10 +537,10 @@ void FemBackend::Implementation::build_constraints_and_matrix() {
         constraints_.add_line(copies[k][c]);
         constraints_.add_entry(copies[k][c], copies[0][c], 1.0);
       }
-  // Held ends: the end nodes keep their coordinate along held_direction.
+  // Constrained nodes keep their coordinates along their constrained directions.
   for (int node = 0; node < n_nodes(); ++node)
-    if (node_held_[node])
-      constrain_directions(node_copies_[node].front(), {problem_.held_direction.normalized()},
+    if (node_constrained_.constrained(node))
+      constrain_directions(node_copies_[node].front(), node_constrained_.directions(node),
                            constraints_);
   // A frictionless cylinder leaves the tube free to turn about its axis and (with free ends)
   // to slide along it. One vertex near mid-height is pinned against both motions; its reaction
@@ -561,7 +558,7 @@ void FemBackend::Implementation::build_constraints_and_matrix() {
       const Vec3 r = vertex_position(x_, master_[w]) - origin;
       const double radial = (r - r.dot(axis) * axis).norm();
       const double distance = std::abs(r.dot(axis) - mean_axial);
-      if (!node_held_[w] && radial > 1e-12 && distance < best - 1e-12) {
+      if (!node_constrained_.constrained(w) && radial > 1e-12 && distance < best - 1e-12) {
         best = distance;
         pinned = w;
       }
@@ -569,7 +566,7 @@ void FemBackend::Implementation::build_constraints_and_matrix() {
     if (pinned >= 0) {
       const Vec3 r = vertex_position(x_, master_[pinned]) - origin;
       std::vector<Vec3> directions{axis.cross(r).normalized()};
-      if (problem_.end_condition == EndCondition::free_ends) directions.push_back(axis);
+      if (problem_.constraints.empty()) directions.push_back(axis);
       constrain_directions(vertex_dofs_[master_[pinned]], directions, constraints_);
     }
   }
@@ -818,7 +815,6 @@ int FemBackend::Implementation::solve_shifted(const LoadStep& step, double shift
 // Nodes the body has grown into, and those predicted in contact, start from their closest
 // point on its surface: the predictor of a growing body, keeping held nodes on their planes.
 void FemBackend::Implementation::contact_predictor() {
-  const Vec3 d = problem_.held_direction.normalized();
   for (int node = 0; node < n_nodes(); ++node) {
     const Vec3 x = node_position(x_, node);
     const SurfacePoint s = problem_.body->query(x);
@@ -826,7 +822,9 @@ void FemBackend::Implementation::contact_predictor() {
     // surface too: a penetration or gap left by the secant would cost kA g of residual.
     if (s.signed_distance_m >= 0.0 && multiplier_N_[node] <= 0.0) continue;
     Vec3 target = s.closest_point_m;
-    if (node_held_[node]) target -= (target - x).dot(d) * d;
+    Vec3 move = target - x;
+    node_constrained_.remove_constrained(node, move);
+    target = x + move;
     set_node_position(x_, node, target);
   }
 }

@@ -160,6 +160,8 @@ SurfaceVtu garment_vtu(const SimulationMesh& mesh, const SurfaceState& state,
   SurfaceVtu vtu(state.positions_m, mesh.triangles);
   vtu.add_point_scalar("pressure_Pa", field.pressure_Pa);
   vtu.add_point_scalar("normal_force_N", field.normal_force_N);
+  if (!field.friction_traction_Pa.empty())
+    vtu.add_point_scalar("friction_traction_Pa", field.friction_traction_Pa);
   vtu.add_point_scalar("vertex_area_m2", field.vertex_area_m2);
   vtu.add_point_flag("contact", field.contact);
   vtu.add_point_vector("normal", field.normal);

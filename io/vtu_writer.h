@@ -79,7 +79,8 @@ class SurfaceVtu {
 };
 
 // The garment of one load step: points are state.positions_m, cells mesh.triangles. Point data:
-//   pressure_Pa, normal_force_N, vertex_area_m2, contact (0/1), normal (unit, away from the body)
+//   pressure_Pa, normal_force_N, friction_traction_Pa (tangential contact force / area),
+//   vertex_area_m2, contact (0/1), normal (unit, away from the body)
 //     from `field`;
 //   stretch_max, stretch_min: principal stretches (vertex_principal_stretches);
 //   internal_force_N, contact_force_N (3-vectors), gap_m: from `state` when it holds them

@@ -47,15 +47,10 @@ FlatPanelStart::FlatPanelStart(const Problem& problem, const MassSpringParameter
   const int n = panels_.mesh.n_vertices;
   mass_kg_ = lumped_masses_kg(panels_.mesh, problem_.fabric->areal_density_kg_per_m2);
   rest_vertex_area_m2_ = rest_vertex_areas_m2(panels_.mesh);
-  // A held welded vertex holds every copy: the flat panels keep the sewn tube's axial
-  // coordinates, so the held ends start where the sewn start would put them.
-  std::vector<char> held_welded(welded.n_vertices, 0);
-  for (int v : problem_.held_vertices)
-    if (v >= 0 && v < welded.n_vertices) held_welded[v] = 1;
-  held_.resize(n);
-  for (int u = 0; u < n; ++u) held_[u] = held_welded[welded.welded_index[u]];
-  held_direction_ = problem_.held_direction.norm() > 0 ? Vec3(problem_.held_direction.normalized())
-                                                       : Vec3::UnitZ();
+  // A constrained welded vertex constrains every copy: the flat panels keep the sewn tube's
+  // axial coordinates, so the held ends start where the sewn start would put them.
+  constrained_ = ConstrainedDirections(problem_.constraints, welded.n_vertices)
+                     .copies(welded.welded_index);
   mean_edge_m_ = mean_rest_edge_length_m(welded);
   size_m_ = std::sqrt(rest_area(welded));
   // Fails early (fewer than two panels) rather than at the first load step.
@@ -78,7 +73,7 @@ void FlatPanelStart::forces(const std::vector<Vec3>& x, bool gravity_on,
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (k > 0) force[i] += penalty_force_N(cylinder_->query(x[i]), k, rest_vertex_area_m2_[i]);
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
-    if (held_[i]) force[i] -= force[i].dot(held_direction_) * held_direction_;
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
   }
 }
 
@@ -89,7 +84,7 @@ void FlatPanelStart::rk4_frame(double dt, double c, bool gravity_on) {
                       return 0.0;
                     });
   for (std::size_t i = 0; i < x_.size(); ++i)
-    if (held_[i]) v_[i] -= v_[i].dot(held_direction_) * held_direction_;
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, v_[i]);
 }
 
 double FlatPanelStart::choose_time_step_s() const {

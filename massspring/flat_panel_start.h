@@ -8,6 +8,7 @@
 
 #include "contact/cylinder.h"
 #include "core/backend.h"
+#include "core/constrained_directions.h"
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
@@ -65,8 +66,7 @@ class FlatPanelStart {
   SeamSprings seams_;
   std::vector<double> mass_kg_;
   std::vector<double> rest_vertex_area_m2_;
-  std::vector<char> held_;
-  Vec3 held_direction_;
+  ConstrainedDirections constrained_;
   double mean_edge_m_ = 0.0;
   double size_m_ = 0.0;
 

@@ -43,17 +43,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   const int n = mesh.n_vertices;
   mass_kg_ = lumped_masses_kg(mesh, problem_.fabric->areal_density_kg_per_m2);
   rest_vertex_area_m2_ = rest_vertex_areas_m2(mesh);
-  held_.assign(n, 0);
-  for (int v : problem_.held_vertices) {
-    if (v < 0 || v >= n)
-      throw std::invalid_argument("mass spring: held vertex " + std::to_string(v) +
-                                  " is not a vertex of the mesh");
-    held_[v] = 1;
-  }
-  if (!problem_.held_vertices.empty() && !(problem_.held_direction.norm() > 0))
-    throw std::invalid_argument("mass spring: the held direction is zero");
-  held_direction_ =
-      problem_.held_vertices.empty() ? Vec3::UnitZ() : Vec3(problem_.held_direction.normalized());
+  constrained_ = ConstrainedDirections(problem_.constraints, n);
   size_m_ = std::sqrt(rest_area(mesh));
   // Stop rule (architecture.md): a force relative to the tension scale, Y h^2 / L (h the mean
   // rest edge, L = size_m_). A smooth error of strain amplitude e over the garment leaves about
@@ -107,7 +97,7 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     if (body && k > 0)
       force[i] += penalty_force_N(body->query(x[i]), k, rest_vertex_area_m2_[i], multiplier_N_[i]);
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
-    if (held_[i]) remove_held_component(force[i]);
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
     const double squared = force[i].squaredNorm();
     largest_squared = std::max(largest_squared, squared);
     total_squared += squared;  // std::max drops NaN; a sum keeps it
@@ -124,7 +114,7 @@ double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double
       },
       stop_below_N);
   for (std::size_t i = 0; i < x_.size(); ++i)
-    if (held_[i]) remove_held_component(v_[i]);
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, v_[i]);
   return residual;
 }
 

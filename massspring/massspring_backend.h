@@ -15,6 +15,7 @@
 #pragma once
 
 #include "core/backend.h"
+#include "core/constrained_directions.h"
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
@@ -65,9 +66,6 @@ class MassSpringBackend final : public Backend {
   // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact
   // force (penalty_contact.h).
   double contact_penetration_m(bool update_multipliers);
-  void remove_held_component(Vec3& vector) const {
-    vector -= vector.dot(held_direction_) * held_direction_;
-  }
 
   Problem problem_;
   MassSpringParameters parameters_;
@@ -75,8 +73,7 @@ class MassSpringBackend final : public Backend {
   BendingHinges hinges_;
   std::vector<double> mass_kg_;
   std::vector<double> rest_vertex_area_m2_;
-  std::vector<char> held_;
-  Vec3 held_direction_;
+  ConstrainedDirections constrained_;
   double tolerance_N_ = 0.0;
   double size_m_ = 0.0;  // the garment's rest size, sqrt(rest area)
   double time_step_s_ = 0.0;

@@ -53,15 +53,61 @@ struct Tube {
   }
 };
 
-// The garment's own force that a uniform pressure p on the body balances: -p A_v n_v.
+// Equilibrium under a uniform pressure p on the body: the body pushes p A_v n_v on each
+// vertex and the garment's own force -p A_v n_v balances it.
 SurfaceState pressed_state(const Tube& tube, double pressure_Pa) {
   SurfaceState state;
   state.positions_m = tube.positions_m;
   const auto area = tube.barycentric_area_m2();
-  for (int v = 0; v < tube.n_vertices(); ++v)
+  for (int v = 0; v < tube.n_vertices(); ++v) {
     state.internal_force_N.push_back(-pressure_Pa * area[v] * tube.radial[v]);
+    state.contact_force_N.push_back(pressure_Pa * area[v] * tube.radial[v]);
+  }
   state.in_contact.assign(tube.n_vertices(), 1);
   return state;
+}
+
+TEST(PressureExtractor, BothDefinitionsReadTheUniformPressureAtEquilibrium) {
+  const Tube tube;
+  const Cylinder body(Vec3::Zero(), Vec3::UnitZ(), tube.radius_m);
+  const double p = 640.0;
+  for (PressureDefinition definition :
+       {PressureDefinition::contact_traction, PressureDefinition::garment_force}) {
+    const PressureField field = extract_pressure(
+        tube.triangles, pressed_state(tube, p), VertexAreaDefinition::barycentric, &body, definition);
+    EXPECT_EQ(field.definition, definition);
+    for (int v = 0; v < tube.n_vertices(); ++v) {
+      EXPECT_NEAR(field.pressure_Pa[v], p, 1e-9 * p) << to_string(definition) << ", vertex " << v;
+      EXPECT_NEAR(field.friction_traction_Pa[v], 0.0, 1e-9 * p);
+    }
+  }
+}
+
+TEST(PressureExtractor, ContactTractionSplitsTheContactForceIntoPressureAndFriction) {
+  // The body pushes p A n and rubs tau A along the axis; the garment's own force is some other
+  // force (here nothing balances: gravity or an unfinished solve). The contact traction reads p
+  // and tau whatever the garment's force; the paper's definition reads that force.
+  const Tube tube;
+  const Cylinder body(Vec3::Zero(), Vec3::UnitZ(), tube.radius_m);
+  const double p = 300.0, tau = 45.0, garment_Pa = 120.0;
+  SurfaceState state = pressed_state(tube, p);
+  const auto area = tube.barycentric_area_m2();
+  for (int v = 0; v < tube.n_vertices(); ++v) {
+    state.contact_force_N[v] += tau * area[v] * Vec3::UnitZ();
+    state.internal_force_N[v] = -garment_Pa * area[v] * tube.radial[v];
+  }
+  const PressureField contact =
+      extract_pressure(tube.triangles, state, VertexAreaDefinition::barycentric, &body);
+  const PressureField paper = extract_pressure(tube.triangles, state, VertexAreaDefinition::barycentric,
+                                               &body, PressureDefinition::garment_force);
+  EXPECT_EQ(contact.definition, PressureDefinition::contact_traction);  // the default
+  for (int v = 0; v < tube.n_vertices(); ++v) {
+    EXPECT_NEAR(contact.pressure_Pa[v], p, 1e-9 * p);
+    EXPECT_NEAR(contact.normal_force_N[v], p * area[v], 1e-9 * p * area[v]);
+    EXPECT_NEAR(contact.friction_traction_Pa[v], tau, 1e-9 * p);
+    EXPECT_NEAR(paper.pressure_Pa[v], garment_Pa, 1e-9 * p);
+    EXPECT_NEAR(paper.friction_traction_Pa[v], tau, 1e-9 * p);
+  }
 }
 
 TEST(PressureExtractor, TubeReadsTheUniformPressureAtEveryVertex) {

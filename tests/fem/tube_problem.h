@@ -2,10 +2,12 @@
 // cylinder (axis z through the origin), with the closed forms of cylinder-theory.md.
 #pragma once
 
+#include "cases/cylinder_theory.h"
 #include "contact/cylinder.h"
 #include "contact/pressure_extractor.h"
 #include "contact/tube_placement.h"
 #include "core/backend.h"
+#include "core/constrained_directions.h"
 #include "core/material.h"
 #include "core/tube_garment.h"
 
@@ -30,18 +32,15 @@ struct TubeCase {
   TubeCase(const std::string& law_name, EndCondition ends, MeshSpacing spacing = MeshSpacing{})
       : garment(make_tube_garment("4 5T", 0.1878, 0.24, 2, spacing)), mesh(weld(garment)) {
     law = make_material_law(law_name, fabric);
-    rest_radius_m = garment.ring_circumference_m / (2.0 * M_PI);
+    rest_radius_m = ring_circumference_m(garment) / (2.0 * M_PI);
     cylinder = std::make_unique<Cylinder>(Vec3::Zero(), Vec3::UnitZ(), rest_radius_m);
     problem.mesh = &mesh;
     problem.law = law.get();
     problem.fabric = &fabric;
     problem.body = cylinder.get();
-    problem.end_condition = ends;
-    if (ends == EndCondition::held_ends) {
+    if (ends == EndCondition::held_ends)
       for (const char* edge : {"bottom", "top"})
-        for (int v : mesh.vertex_groups.at(edge)) problem.held_vertices.push_back(v);
-      problem.held_direction = Vec3::UnitZ();
-    }
+        problem.constraints.push_back(held_along(mesh, edge, Vec3::UnitZ()));
   }
 
   // The tube as a circle of radius `radius_m`: layout (u, v) goes to angle 2 pi u / L and

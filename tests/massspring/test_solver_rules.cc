@@ -1,6 +1,7 @@
 // The solver's rules: the stop rule is a residual force, gravity and held ends enter the
 // balance, state() separates internal from contact force, and failures throw SolverError
 // naming the step instead of hanging.
+#include "core/constrained_directions.h"
 #include "massspring/massspring_entry.h"
 #include "test_meshes.h"
 #include "tube_on_cylinder.h"
@@ -102,16 +103,15 @@ TEST(MassSpringSolver, HeldEndsCarryTheWeightOfAHangingTube) {
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
   tube.cylinder.set_radius(1.2 * tube.rest_radius_m());
   for (const char* edge : {"bottom", "top"})
-    for (int v : tube.mesh.vertex_groups.at(edge)) tube.problem.held_vertices.push_back(v);
-  tube.problem.end_condition = EndCondition::held_ends;
-  tube.problem.held_direction = Vec3::UnitZ();
+    tube.problem.constraints.push_back(held_along(tube.mesh, edge, Vec3::UnitZ()));
   MassSpringBackend backend(tube.problem, MassSpringParameters{});
   const std::vector<Vec3> start = tube.start_positions();
   backend.set_positions(start);
   const StepReport report = backend.solve(LoadStep{0, 1.2, true});
   const SurfaceState s = backend.state();
   std::vector<char> held(s.size(), 0);
-  for (int v : tube.problem.held_vertices) held[v] = 1;
+  for (const VertexConstraint& c : tube.problem.constraints)
+    for (int v : c.vertices) held[v] = 1;
   double free_weight_N = 0.0, held_pull_N = 0.0, sag_m = 0.0;
   for (std::size_t v = 0; v < s.size(); ++v) {
     if (held[v]) {

@@ -1,4 +1,4 @@
-#include "cases/cylinder_run.h"
+#include "cases/scenario_run.h"
 
 #include "core/units.h"
 #include "io/csv_table.h"
@@ -6,6 +6,7 @@
 #include "io/vtu_share.h"
 #include "io/vtu_writer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,53 +17,50 @@
 namespace tightfit {
 
 std::vector<std::string> pressure_table_columns() {
-  return {"step",        "radius_m",   "alpha",         "p_mean_Pa",   "p_std_Pa",
-          "p_theory_Pa", "rel_error",  "p_mean_gf_cm2", "p_mean_mmHg", "contact_fraction",
-          "p_eq7_Pa",    "p_min_Pa",   "p_max_Pa",      "vertex_area", "iterations",
-          "residual_N",  "wall_time_s"};
+  return {"step",          "alpha",          "p_mean_Pa",          "p_std_Pa",
+          "p_theory_Pa",   "rel_error",      "p_mean_gf_cm2",      "p_mean_mmHg",
+          "contact_fraction", "p_min_Pa",    "p_max_Pa",           "friction_max_Pa",
+          "vertex_area",   "pressure_definition", "iterations",    "residual_N",
+          "wall_time_s"};
 }
 
 namespace {
 
 std::vector<CsvCell> pressure_row(const StepMeasurement& m) {
   const PressureSummary& s = m.summary;
-  return {m.step,
-          m.radius_m,
-          m.alpha,
-          s.mean_Pa,
-          s.std_Pa,
-          m.p_theory_Pa,
-          m.rel_error,
-          units::to_gf_per_cm2(s.mean_Pa),
-          units::to_mmHg(s.mean_Pa),
-          s.contact_fraction,
-          m.p_eq7_Pa,
-          s.min_Pa,
-          s.max_Pa,
-          to_string(m.field.area_definition),
-          m.report.iterations,
-          m.report.residual_N,
-          m.report.wall_seconds};
-}
-
-void write_angular_profile(const std::string& path, const CylinderSetup& setup,
-                           const StepMeasurement& m) {
-  const AngularProfile profile = pressure_against_angle(m.field, m.state.positions_m, *setup.body,
-                                                        setup.parameters.pressure.angle_bins);
-  CsvTable table(path, {"theta_deg", "pressure_Pa", "n_vertices", "p_theory_Pa", "alpha"});
-  for (std::size_t b = 0; b < profile.theta_deg.size(); ++b)
-    table.write_row({profile.theta_deg[b], profile.pressure_Pa[b], profile.n_vertices[b],
-                     m.p_theory_Pa, m.alpha});
+  double friction_max_Pa = 0.0;
+  for (std::size_t v = 0; v < m.field.friction_traction_Pa.size(); ++v)
+    if (m.field.contact[v]) friction_max_Pa = std::max(friction_max_Pa, m.field.friction_traction_Pa[v]);
+  std::vector<CsvCell> row{m.step,
+                           m.alpha,
+                           s.mean_Pa,
+                           s.std_Pa,
+                           m.p_theory_Pa,
+                           m.rel_error,
+                           units::to_gf_per_cm2(s.mean_Pa),
+                           units::to_mmHg(s.mean_Pa),
+                           s.contact_fraction,
+                           s.min_Pa,
+                           s.max_Pa,
+                           friction_max_Pa,
+                           to_string(m.field.area_definition),
+                           to_string(m.field.definition),
+                           m.report.iterations,
+                           m.report.residual_N,
+                           m.report.wall_seconds};
+  for (double value : m.extra_values) row.emplace_back(value);
+  return row;
 }
 
 void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_steps) {
   char line[256];
-  std::snprintf(
-      line, sizeof line,
-      "  step %2d/%zu  alpha %.3f  r %6.2f mm  p %8.2f Pa (%6.3f gf/cm2)  theory %8.2f Pa", m.step,
-      n_steps - 1, m.alpha, 1e3 * m.radius_m, m.p_mean_Pa(), units::to_gf_per_cm2(m.p_mean_Pa()),
-      m.p_theory_Pa);
+  std::snprintf(line, sizeof line, "  step %2d/%zu  alpha %.3f  p %8.2f Pa (%6.3f gf/cm2)", m.step,
+                n_steps - 1, m.alpha, m.p_mean_Pa(), units::to_gf_per_cm2(m.p_mean_Pa()));
   log << line;
+  if (std::isfinite(m.p_theory_Pa)) {
+    std::snprintf(line, sizeof line, "  theory %8.2f Pa", m.p_theory_Pa);
+    log << line;
+  }
   if (std::isfinite(m.rel_error)) {
     std::snprintf(line, sizeof line, " (%+6.2f%%)", 100.0 * m.rel_error);
     log << line;
@@ -73,10 +71,10 @@ void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_s
 
 }  // namespace
 
-RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_backend,
-                            const std::string& output_dir, std::ostream& log) {
+RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
+                       const std::string& output_dir, std::ostream& log) {
   namespace fs = std::filesystem;
-  const OutputSettings& output = setup.parameters.output;
+  const OutputSettings& output = scenario.parameters.output;
   // Every rank holds the whole result. The first writes the tables, the body and the
   // collections; the garment is written by every rank, one piece each, when there are several.
   const bool write_tables = output.write_files && output.is_first_rank();
@@ -86,14 +84,21 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
   const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
 
   RunResult result;
-  std::unique_ptr<Backend> backend = make_backend(setup.problem);
+  const Measurements measurements = make_measurements(scenario.parameters);
+  result.columns = measurement_columns(measurements);
+  const RunFiles files{output_dir, write_tables};
+  std::unique_ptr<Backend> backend = make_backend(scenario.problem);
   result.backend = backend->name();
-  setup.prepare_step(0);
-  backend->set_positions(setup.initial_positions());
+  scenario.prepare_step(0);
+  backend->set_positions(scenario.initial_positions());
 
   std::unique_ptr<CsvTable> table;
   if (write_tables)
-    table = std::make_unique<CsvTable>(path("pressure.csv"), pressure_table_columns());
+  {
+    std::vector<std::string> columns = pressure_table_columns();
+    columns.insert(columns.end(), result.columns.begin(), result.columns.end());
+    table = std::make_unique<CsvTable>(path("pressure.csv"), columns);
+  }
   // The solver's own account of each step (Newton residuals and Krylov iterations, RK4
   // frames and time step), which the progress line only counts.
   std::ofstream solver_log;
@@ -107,9 +112,10 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     body_series = std::make_unique<PvdWriter>(path("body.pvd"));
   }
 
-  for (std::size_t step = 0; step < setup.alphas.size(); ++step) {
+  for (std::size_t step = 0; step < scenario.alphas.size(); ++step) {
     try {
-      result.steps.push_back(solve_and_measure(setup, *backend, static_cast<int>(step)));
+      result.steps.push_back(
+          solve_and_measure(scenario, *backend, static_cast<int>(step), measurements));
     } catch (const SolverError& e) {
       result.failure = e.what();
       log << "  stopped: " << e.what() << std::endl;
@@ -118,13 +124,14 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     }
     const StepMeasurement& m = result.steps.back();
     if (table) table->write_row(pressure_row(m));
+    for (const auto& measurement : measurements) measurement->after_step(scenario, m, files);
     if (solver_log.is_open())
       solver_log << "step " << m.step << ", alpha " << m.alpha << ": " << m.report.detail
                  << std::endl;
     if (write_garment) {
       char stem[64];
       std::snprintf(stem, sizeof stem, "garment_%04zu", step);
-      SurfaceVtu garment = garment_vtu(setup.mesh, m.state, m.field, m.alpha);
+      SurfaceVtu garment = garment_vtu(scenario.mesh, m.state, m.field, m.alpha);
       for (const auto& [array_name, values] : backend->extra_point_data())
         garment.add_point_scalar(array_name, values);
       // The first rank lists the step only after its own piece and the .pvtu header are on
@@ -136,13 +143,15 @@ RunResult run_cylinder_case(CylinderSetup& setup, const BackendFactory& make_bac
     if (write_series) {
       char name[64];
       std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
-      write_body_vtu(path(name), setup.body->display_mesh());
+      write_body_vtu(path(name), scenario.body->body().display_mesh());
       body_series->add(m.alpha, name);
     }
-    print_progress(log, m, setup.alphas.size());
+    print_progress(log, m, scenario.alphas.size());
   }
-  if (write_tables && !result.steps.empty())
-    write_angular_profile(path("pressure_theta.csv"), setup, result.steps.back());
+  for (const auto& measurement : measurements) {
+    measurement->after_run(scenario, result.steps, files);
+    for (const std::string& f : measurement->file_names()) result.files.push_back(f);
+  }
   result.completed = result.failure.empty();
   return result;
 }

@@ -1,0 +1,51 @@
+// A measurement of a scenario (docs/scenarios.md): what a run records at every load step
+// beside the generic pressure summary. Each kind is one file in cases/parts/ and a
+// registration in scenario_parts.cc; the case file lists the ones it wants in
+// Measurements/List.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+struct Scenario;
+struct StepMeasurement;
+
+// Where a run's files go and who writes them (every MPI rank runs; the first writes tables).
+struct RunFiles {
+  std::string directory;
+  bool write_tables = false;
+  std::string path(const std::string& file_name) const;
+};
+
+class Measurement {
+ public:
+  virtual ~Measurement() = default;
+  // The pressure the scenario's closed form predicts at this step, Pa, if this measurement
+  // knows one: it fills pressure.csv's p_theory_Pa and rel_error. The first measurement
+  // listed that knows one gives it.
+  virtual std::optional<double> reference_pressure_Pa(const Scenario& /*scenario*/,
+                                                      const StepMeasurement& /*step*/) const {
+    return std::nullopt;
+  }
+  // Columns this measurement adds to pressure.csv (and to the summary table), and their values
+  // at one step in the same order.
+  virtual std::vector<std::string> columns() const { return {}; }
+  virtual std::vector<double> values(const Scenario& /*scenario*/,
+                                     const StepMeasurement& /*step*/) const {
+    return {};
+  }
+  // Called after every load step is measured, and once when the run ends (with every step
+  // that finished), to write files of its own into `files.directory`.
+  virtual void after_step(const Scenario& /*scenario*/, const StepMeasurement& /*step*/,
+                          const RunFiles& /*files*/) {}
+  virtual void after_run(const Scenario& /*scenario*/,
+                         const std::vector<StepMeasurement>& /*steps*/,
+                         const RunFiles& /*files*/) {}
+  // The files it wrote, for the run's closing line.
+  virtual std::vector<std::string> file_names() const { return {}; }
+};
+
+}  // namespace tightfit

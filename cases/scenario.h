@@ -1,0 +1,37 @@
+// A scenario built from a case's parameters (docs/scenarios.md): the garment and its mesh, the
+// material law, the body, the constraints and the schedule of load steps, with the Problem
+// both backends solve. Everything particular to one kind of case (a tube on a cylinder, a
+// sheet on a plane) lives in the parts the case file chose (cases/parts/).
+#pragma once
+
+#include "cases/case_parameters.h"
+#include "core/backend.h"
+#include "core/garment.h"
+
+#include <memory>
+#include <vector>
+
+namespace tightfit {
+
+struct Scenario {
+  CaseParameters parameters;
+  Garment garment;
+  SimulationMesh mesh;
+  std::unique_ptr<MaterialLaw> law;
+  std::unique_ptr<ScenarioBody> body;
+  Problem problem;  // points into the members above: the scenario never moves
+  double mean_edge_length_m = 0.0;
+  // Every load step's body morph parameter, the first the settling one.
+  std::vector<double> alphas;
+
+  // The placement's start positions of the garment, m.
+  std::vector<Vec3> initial_positions() const;
+  // Shapes the body for load step `step` and returns that step's description.
+  LoadStep prepare_step(int step);
+};
+
+// Throws std::invalid_argument with a message naming the parameter at fault (a garment that
+// can never press on the body, an unknown vertex group, a bad value).
+std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters);
+
+}  // namespace tightfit

@@ -1,0 +1,37 @@
+// Runs a scenario on one backend (the generic driver of `tightfit run`): every load step
+// solved, measured and written as soon as it finishes (a pressure.csv row, the measurements'
+// own files, garment and body VTU, .pvd series), then each measurement's closing files.
+#pragma once
+
+#include "cases/step_measurement.h"
+
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+using BackendFactory = std::function<std::unique_ptr<Backend>(const Problem&)>;
+
+struct RunResult {
+  std::string backend;
+  std::vector<StepMeasurement> steps;  // the steps that finished
+  std::vector<std::string> columns;    // the measurements' extra pressure.csv columns
+  std::vector<std::string> files;      // the files the measurements wrote
+  bool completed = false;
+  std::string failure;  // why the run stopped early, if it did
+};
+
+// Writes into `output_dir` (created if needed): pressure.csv, solver.log (each step's
+// StepReport::detail), what the case's measurements write, and with Output/Write VTU
+// garment_NNNN.vtu, body_NNNN.vtu, garment.pvd, body.pvd. Progress goes to `log`. A backend
+// failure ends the run with completed = false; what was written stays.
+RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
+                       const std::string& output_dir, std::ostream& log);
+
+// The generic columns of pressure.csv, in order; the measurements' columns follow them.
+std::vector<std::string> pressure_table_columns();
+
+}  // namespace tightfit
