@@ -1,5 +1,7 @@
 #include "contact/cylinder.h"
 
+#include "contact/axis_frame.h"
+
 #include <Eigen/Geometry>  // Vec3::cross
 
 #include <cmath>
@@ -32,45 +34,35 @@ SurfacePoint Cylinder::query(const Vec3& x) const {
   s.outward_normal = distance_to_axis > 0 ? Vec3(radial / distance_to_axis) : reference_direction();
   s.signed_distance_m = distance_to_axis - radius_m_;
   s.closest_point_m = x - s.signed_distance_m * s.outward_normal;
+  s.gap_gradient = s.outward_normal;
+  // The normal turns only round the axis: dn/dx = (I - a a^T - n n^T) / rho, the Hessian of
+  // rho - R. On the axis itself it does not exist; zero is left there.
+  if (distance_to_axis > 0)
+    s.normal_derivative_per_m = (Mat3::Identity() - axis_ * axis_.transpose() -
+                                 s.outward_normal * s.outward_normal.transpose()) /
+                                distance_to_axis;
+  s.location.coordinates =
+      Vec3(from_axis.dot(axis_), angle_round_axis_rad(axis_, s.outward_normal), 0.0);
   return s;
 }
 
+Vec3 Cylinder::surface_point_m(const SurfaceLocation& location) const {
+  return point_ + location.coordinates[0] * axis_ +
+         radius_m_ * radial_direction(axis_, location.coordinates[1]);
+}
+
 Vec3 Cylinder::reference_direction() const {
-  // The unit vector normal to the axis nearest to +x (or +y when the axis is along x).
-  const Vec3 seed = std::abs(axis_.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  return (seed - seed.dot(axis_) * axis_).normalized();
+  return reference_direction_normal_to(axis_);
 }
 
 double Cylinder::angle_deg(const Vec3& x) const {
-  const Vec3 e1 = reference_direction();
-  const Vec3 e2 = axis_.cross(e1);
-  const Vec3 d = x - point_;
-  double angle = std::atan2(d.dot(e2), d.dot(e1)) * 180.0 / M_PI;
+  double angle = angle_round_axis_rad(axis_, x - point_) * 180.0 / M_PI;
   if (angle < 0) angle += 360.0;
   return angle;
 }
 
 DisplayMesh Cylinder::display_mesh() const {
-  // The paper's cylinder had 110 vertices (Table 3): 22 round by 5 along.
-  const int n_round = 22, n_along = 5;
-  const Vec3 e1 = reference_direction();
-  const Vec3 e2 = axis_.cross(e1);
-  DisplayMesh mesh;
-  for (int j = 0; j < n_along; ++j) {
-    const double s = display_height_m_ * (double(j) / (n_along - 1) - 0.5);
-    for (int i = 0; i < n_round; ++i) {
-      const double phi = 2.0 * M_PI * i / n_round;
-      mesh.vertices_m.push_back(point_ + s * axis_ +
-                                radius_m_ * (std::cos(phi) * e1 + std::sin(phi) * e2));
-    }
-  }
-  for (int j = 0; j + 1 < n_along; ++j)
-    for (int i = 0; i < n_round; ++i) {
-      const int a = j * n_round + i, b = j * n_round + (i + 1) % n_round;
-      mesh.triangles.push_back({a, b, b + n_round});
-      mesh.triangles.push_back({a, b + n_round, a + n_round});
-    }
-  return mesh;
+  return revolution_display_mesh(*this, display_height_m_);
 }
 
 }  // namespace tightfit

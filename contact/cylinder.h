@@ -13,8 +13,11 @@ class Cylinder final : public RigidBody {
            double display_height_m = 0.24);
 
   std::string name() const override { return "cylinder"; }
+  // The location's coordinates are (axial coordinate from point_on_axis_m (m), angle round the
+  // axis from reference_direction() (radians), 0): the same point as the radius grows.
   SurfacePoint query(const Vec3& x) const override;
   DisplayMesh display_mesh() const override;
+  Vec3 surface_point_m(const SurfaceLocation& location) const override;
 
   void set_radius(double radius_m);  // throws std::invalid_argument unless positive
   double radius_m() const { return radius_m_; }

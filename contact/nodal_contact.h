@@ -19,13 +19,15 @@ struct NodalContact {
   double multiplier_N = 0.0;  // lambda >= 0
   Vec3 normal = Vec3::UnitZ();
   Vec3 force_N = Vec3::Zero();  // lambda n, on the garment
-  // -d(force)/dx = kA n n^T - lambda dn/dx when active, N/m (symmetrised).
+  // -d(force)/dx = kA n (dg/dx)^T - lambda dn/dx when active, N/m, symmetrised (the linear
+  // solvers may be symmetric ones). dg/dx and dn/dx are the body's own (SurfacePoint): exact
+  // for the analytic bodies, where dg/dx = n and dn/dx is symmetric so nothing is lost; a mesh
+  // body's smooth normal makes the exact derivative slightly unsymmetric.
   Mat3 stiffness_N_per_m = Mat3::Zero();
 };
 
-// `normal_step_m` is the finite-difference step that measures the body's curvature dn/dx
-// through RigidBody::query (central differences); zero skips the stiffness.
+// `with_stiffness` false skips the stiffness (the force alone).
 NodalContact nodal_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
-                           double penalty_N_per_m, double normal_step_m);
+                           double penalty_N_per_m, bool with_stiffness);
 
 }  // namespace tightfit

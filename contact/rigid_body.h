@@ -1,5 +1,5 @@
 // Rigid bodies behind one query, so that every backend and the pressure extractor can treat a
-// cylinder, a plane or (later) a body mesh alike.
+// cylinder, a cone, a plane or a body mesh alike (docs/bodies.md).
 #pragma once
 
 #include "core/types.h"
@@ -9,11 +9,29 @@
 
 namespace tightfit {
 
+// A point of the body's own surface, in the body's own terms, so that a point can be followed
+// while the body grows or morphs (friction anchors, docs/model.md "Friction"). A mesh body
+// names a triangle and the barycentric coordinates in it; an analytic body leaves `face` at -1
+// and gives its own surface parameters (see each body's header).
+struct SurfaceLocation {
+  int face = -1;
+  Vec3 coordinates = Vec3::Zero();
+};
+
 // The body's surface as seen from a point in space.
 struct SurfacePoint {
   double signed_distance_m = 0.0;  // negative inside the body
   Vec3 closest_point_m = Vec3::Zero();
   Vec3 outward_normal = Vec3::UnitZ();  // unit, at the closest point, pointing out of the body
+  // dg/dx of the signed distance g. Equals `outward_normal` for the analytic bodies; a mesh
+  // body's normal is its smooth interpolated field while g is the distance to the flat faces,
+  // so the two differ by the angle between a face and that field (docs/bodies.md).
+  Vec3 gap_gradient = Vec3::UnitZ();
+  // dn/dx: how `outward_normal` turns as the query point x moves (1/m). For a signed distance
+  // field it is its Hessian, (I - n n^T) curvature / (1 + g curvature) in the principal
+  // directions; a mesh body gives the derivative of its interpolated normal field.
+  Mat3 normal_derivative_per_m = Mat3::Zero();
+  SurfaceLocation location;  // the closest point on the body's own surface
 };
 
 // A triangulated surface for drawing the body (ParaView output); not used for contact.
@@ -28,6 +46,9 @@ class RigidBody {
   virtual std::string name() const = 0;
   virtual SurfacePoint query(const Vec3& x) const = 0;
   virtual DisplayMesh display_mesh() const = 0;
+  // Where a SurfaceLocation found by query() is now: after the body grew or morphed it is the
+  // same point of the body's surface, carried with it.
+  virtual Vec3 surface_point_m(const SurfaceLocation& location) const = 0;
 };
 
 }  // namespace tightfit

@@ -1,0 +1,232 @@
+// VTK's readers for OBJ, STL and PLY; VTK stays inside this file.
+#include "contact/body_mesh_error.h"
+#include "contact/polygon_mesh.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkIdList.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkSTLReader.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace tightfit {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// Collects what a reader reports through vtkErrorMacro/vtkWarningMacro instead of letting VTK
+// print it, keeping the words of each report: VTK prefixes them with "ERROR: In file, line n"
+// and "vtkClass (address): ".
+void collect_message(vtkObject*, unsigned long, void* client_data, void* call_data) {
+  auto* messages = static_cast<std::string*>(client_data);
+  if (!call_data) return;
+  std::istringstream lines(static_cast<const char*>(call_data));
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("ERROR: In", 0) == 0 || line.rfind("Warning: In", 0) == 0) continue;
+    const auto address_end = line.find("): ");
+    if (line.rfind("vtk", 0) == 0 && address_end != std::string::npos)
+      line = line.substr(address_end + 3);
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    *messages += (messages->empty() ? "" : "; ") + line;
+    break;  // the first line says what; the rest is VTK's pipeline detail
+  }
+}
+
+vtkSmartPointer<vtkPolyDataAlgorithm> reader_for(const std::string& path, const std::string& ext) {
+  if (ext == "obj") {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    return r;
+  }
+  if (ext == "stl") {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    r->MergingOn();  // STL repeats each vertex in every facet: weld them into a connected surface
+    return r;
+  }
+  if (ext == "ply") {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    return r;
+  }
+  throw BodyMeshError("body mesh '" + path + "': unknown file type '." + ext +
+                      "' (expected .obj, .stl or .ply)");
+}
+
+BodyMeshError file_error(const std::string& path, int line, const std::string& message) {
+  return BodyMeshError("body mesh '" + path + "', line " + std::to_string(line) + ": " + message);
+}
+
+// VTK's OBJ reader takes "v 1 x 0" or "v 0 0" without a word (it reads what it can): every
+// vertex line must hold three numbers.
+void check_obj_vertex_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.rfind("v ", 0) != 0 && line.rfind("v\t", 0) != 0) continue;
+    std::istringstream words(line.substr(2));
+    std::string word;
+    for (int k = 0; k < 3; ++k) {
+      if (!(words >> word))
+        throw file_error(path, number, "a vertex needs three coordinates: '" + line + "'");
+      char* end = nullptr;
+      std::strtod(word.c_str(), &end);
+      if (end == word.c_str() || *end != '\0')
+        throw file_error(path, number, "'" + word + "' is not a number: '" + line + "'");
+    }
+  }
+}
+
+// VTK's PLY reader crashes (a double free) on a file that ends before the elements its header
+// announces: make sure the data is all there first. ASCII: one line per vertex and per face;
+// binary: at least the bytes of the vertices and of as many triangles.
+void check_ply_complete(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, format, current;
+  long n_vertices = 0, n_faces = 0, vertex_bytes = 0, face_bytes = 0;
+  const std::map<std::string, int> size_of = {
+      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+  auto bytes = [&](const std::string& type) {
+    const auto it = size_of.find(type);
+    return it == size_of.end() ? 0 : it->second;
+  };
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "end_header") break;
+    if (keyword == "format") words >> format;
+    if (keyword == "element") {
+      long count = 0;
+      words >> current >> count;
+      if (current == "vertex") n_vertices = count;
+      if (current == "face") n_faces = count;
+    }
+    if (keyword == "property") {
+      std::string type, count_type, index_type;
+      words >> type;
+      if (type == "list") {
+        words >> count_type >> index_type;
+        if (current == "face") face_bytes += bytes(count_type) + 3 * bytes(index_type);
+      } else if (current == "vertex") {
+        vertex_bytes += bytes(type);
+      }
+    }
+  }
+  if (!in) throw file_error(path, number, "the header has no end_header");
+  if (format == "ascii") {
+    long data_lines = 0;
+    while (std::getline(in, line))
+      if (line.find_first_not_of(" \t\r") != std::string::npos) ++data_lines;
+    if (data_lines < n_vertices + n_faces)
+      throw BodyMeshError("body mesh '" + path + "': truncated: the header announces " +
+                          std::to_string(n_vertices) + " vertices and " + std::to_string(n_faces) +
+                          " faces, the file holds " + std::to_string(data_lines) + " data lines");
+    return;
+  }
+  const auto data_start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const long available = static_cast<long>(in.tellg() - data_start);
+  const long needed = n_vertices * vertex_bytes + n_faces * face_bytes;
+  if (available < needed)
+    throw BodyMeshError("body mesh '" + path + "': truncated: " + std::to_string(available) +
+                        " bytes of data where the header's " + std::to_string(n_vertices) +
+                        " vertices and " + std::to_string(n_faces) + " faces need at least " +
+                        std::to_string(needed));
+}
+
+}  // namespace
+
+PolygonMesh read_polygon_mesh(const std::string& path) {
+  if (!std::ifstream(path)) throw BodyMeshError("body mesh '" + path + "': cannot open the file");
+  const std::string ext = lower_extension(path);
+  auto reader = reader_for(path, ext);
+  if (ext == "obj") check_obj_vertex_lines(path);
+  if (ext == "ply") check_ply_complete(path);
+  // The reader's own reports say what is wrong; the pipeline's only that the reader failed.
+  std::string messages, pipeline_messages;
+  auto observer = vtkSmartPointer<vtkCallbackCommand>::New();
+  observer->SetCallback(collect_message);
+  observer->SetClientData(&messages);
+  reader->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->AddObserver(vtkCommand::WarningEvent, observer);
+  auto pipeline_observer = vtkSmartPointer<vtkCallbackCommand>::New();
+  pipeline_observer->SetCallback(collect_message);
+  pipeline_observer->SetClientData(&pipeline_messages);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipeline_observer);
+  reader->Update();
+  if (messages.empty()) messages = pipeline_messages;
+  if (!messages.empty() || reader->GetErrorCode() != 0)
+    throw BodyMeshError("body mesh '" + path + "': the " + ext + " reader failed: " +
+                        (messages.empty()
+                             ? std::string("error code ") + std::to_string(reader->GetErrorCode())
+                             : messages));
+  vtkPolyData* data = reader->GetOutput();
+  PolygonMesh mesh;
+  const vtkIdType n_points = data->GetNumberOfPoints();
+  mesh.vertices.resize(n_points);
+  for (vtkIdType i = 0; i < n_points; ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw BodyMeshError("body mesh '" + path + "': vertex " + std::to_string(i) +
+                          " has a coordinate that is not a finite number");
+    mesh.vertices[i] = Vec3(p[0], p[1], p[2]);
+  }
+  vtkCellArray* polys = data->GetPolys();
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids)) {
+    const int face = static_cast<int>(mesh.faces.size());
+    const vtkIdType n = ids->GetNumberOfIds();
+    if (n < 3 || n > 4)
+      throw BodyMeshError("body mesh '" + path + "': face " + std::to_string(face) + " has " +
+                          std::to_string(n) + " vertices (triangles and quads only)");
+    std::vector<int> vertices(n);
+    for (vtkIdType k = 0; k < n; ++k) {
+      const vtkIdType v = ids->GetId(k);
+      if (v < 0 || v >= n_points)
+        throw BodyMeshError("body mesh '" + path + "': face " + std::to_string(face) +
+                            " names vertex " + std::to_string(v) + " (counted from 0) of " +
+                            std::to_string(n_points));
+      vertices[k] = static_cast<int>(v);
+    }
+    mesh.faces.push_back(std::move(vertices));
+  }
+  if (mesh.faces.empty())
+    throw BodyMeshError("body mesh '" + path +
+                        "': no faces (an empty, truncated or unreadable file)");
+  const vtkIdType n_other = data->GetNumberOfLines() + data->GetNumberOfStrips();
+  if (n_other > 0)
+    throw BodyMeshError("body mesh '" + path + "': " + std::to_string(n_other) +
+                        " lines or strips besides the faces (a surface of polygons only)");
+  return mesh;
+}
+
+}  // namespace tightfit

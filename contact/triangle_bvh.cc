@@ -1,0 +1,46 @@
+#include "contact/triangle_bvh.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+namespace tightfit {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalTriangles = std::vector<Kernel::Triangle_3>;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, CgalTriangles::const_iterator>;
+using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+struct TriangleBvh::Tree {
+  CgalTriangles triangles;  // the primitives point into this
+  AabbTree tree;
+};
+
+TriangleBvh::TriangleBvh() = default;
+TriangleBvh::~TriangleBvh() = default;
+TriangleBvh::TriangleBvh(TriangleBvh&&) noexcept = default;
+TriangleBvh& TriangleBvh::operator=(TriangleBvh&&) noexcept = default;
+
+void TriangleBvh::build(const std::vector<Vec3>& v, const std::vector<Triangle>& triangles) {
+  auto point = [&](int i) { return Kernel::Point_3(v[i].x(), v[i].y(), v[i].z()); };
+  tree_ = std::make_unique<Tree>();
+  tree_->triangles.reserve(triangles.size());
+  for (const Triangle& t : triangles)
+    tree_->triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+  tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
+  tree_->tree.build();
+  // A kd-tree of the vertices gives each query a near first guess (CGAL's recommendation for
+  // many distance queries); building it now keeps later queries free of lazy construction.
+  tree_->tree.accelerate_distance_queries();
+}
+
+TriangleBvh::Hit TriangleBvh::closest(const Vec3& x) const {
+  const auto found = tree_->tree.closest_point_and_primitive(Kernel::Point_3(x.x(), x.y(), x.z()));
+  Hit hit;
+  hit.triangle = static_cast<int>(found.second - tree_->triangles.cbegin());
+  hit.point_m = Vec3(found.first.x(), found.first.y(), found.first.z());
+  return hit;
+}
+
+}  // namespace tightfit
