@@ -67,7 +67,7 @@ void MeshBody::set_vertex_positions(const std::vector<Vec3>& vertices_m) {
                         std::to_string(vertices_m.size()));
   TriangleSurface moved = surface_;
   moved.vertices_m = vertices_m;
-  check_body_surface(moved, open_, what_);
+  check_body_geometry(moved, open_, what_);  // the connectivity passed on construction
   surface_ = std::move(moved);
   update_geometry();
 }

@@ -38,8 +38,9 @@ class MeshBody final : public RigidBody {
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 
-  // New vertex positions, same triangles (a morph or a growth step): normals are recomputed,
-  // the BVH rebuilt, and the faces' areas and the volume's sign checked again.
+  // New vertex positions, same triangles (a morph or a growth step): the faces' areas and the
+  // volume's sign are checked again (check_body_geometry), the normals recomputed and the BVH
+  // rebuilt.
   void set_vertex_positions(const std::vector<Vec3>& vertices_m);
 
   const TriangleSurface& surface() const { return surface_; }

@@ -9,6 +9,7 @@
 #include <utility>
 
 namespace tightfit {
+
 namespace {
 
 std::string face_text(const TriangleSurface& s, int t) {
@@ -32,6 +33,18 @@ void check_areas(const TriangleSurface& s, const std::string& what) {
     if (!((b - a).cross(c - a).norm() > 1e-10 * longest))
       fail(what,
            face_text(s, t) + " is degenerate: it has no area (repeated or collinear vertices)");
+  }
+}
+
+// The faces face outwards when the enclosed volume is positive (closed surfaces only).
+void check_volume(const TriangleSurface& s, bool allow_open_surface, const std::string& what) {
+  if (allow_open_surface) return;
+  const double volume = enclosed_volume_m3(s.vertices_m, s.triangles);
+  if (!(volume > 0)) {
+    std::ostringstream out;
+    out << "oriented inwards: the enclosed volume is " << volume
+        << " m^3 (the faces must run counter-clockwise seen from outside)";
+    fail(what, out.str());
   }
 }
 
@@ -106,14 +119,13 @@ void check_body_surface(const TriangleSurface& s, bool allow_open_surface,
                      " form more than one fan (surfaces touching at a point), e.g. " +
                      face_text(s, c / 3));
   }
-  if (allow_open_surface) return;
-  const double volume = enclosed_volume_m3(s.vertices_m, s.triangles);
-  if (!(volume > 0)) {
-    std::ostringstream out;
-    out << "oriented inwards: the enclosed volume is " << volume
-        << " m^3 (the faces must run counter-clockwise seen from outside)";
-    fail(what, out.str());
-  }
+  check_volume(s, allow_open_surface, what);
+}
+
+void check_body_geometry(const TriangleSurface& s, bool allow_open_surface,
+                         const std::string& what) {
+  check_areas(s, what);
+  check_volume(s, allow_open_surface, what);
 }
 
 double enclosed_volume_m3(const std::vector<Vec3>& v, const std::vector<Triangle>& triangles) {

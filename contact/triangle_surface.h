@@ -25,6 +25,11 @@ struct TriangleSurface {
 void check_body_surface(const TriangleSurface& surface, bool allow_open_surface,
                         const std::string& what);
 
+// The part of check_body_surface that moving the vertices can change (the faces' areas and the
+// volume's sign), for a surface whose connectivity already passed.
+void check_body_geometry(const TriangleSurface& surface, bool allow_open_surface,
+                         const std::string& what);
+
 // Volume enclosed by a closed surface, sum of p0 . (p1 x p2) / 6 over the triangles
 // (divergence theorem): positive when the triangles face outwards.
 double enclosed_volume_m3(const std::vector<Vec3>& vertices_m,

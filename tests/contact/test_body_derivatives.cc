@@ -1,12 +1,10 @@
 // Every body kind's normal derivative dn/dx and gap gradient dg/dx against central finite
-// differences of its own query(), and the nodal contact stiffness built from them against
-// finite differences of the contact force.
+// differences of its own query().
 #include "body_mesh_files.h"
 #include "contact/cone.h"
 #include "contact/cylinder.h"
 #include "contact/mesh_body.h"
 #include "contact/morphing_mesh_body.h"
-#include "contact/nodal_contact.h"
 #include "contact/plane.h"
 
 #include <gtest/gtest.h>
@@ -129,36 +127,6 @@ TEST_F(MeshDerivatives, AfterAMorph) {
   MorphingMeshBody body(surface(), {}, options, scaling);
   body.set_morph(0.0, 1.1);
   expect_derivatives_match(body, face_point * 1.1, "face, scaled");
-}
-
-// The nodal contact's stiffness is the symmetric part of minus the force's derivative, built
-// from the body's own derivatives.
-void expect_stiffness_matches(const RigidBody& body, const Vec3& x) {
-  const double penalty = 2e4, multiplier = 0.3, h = 1e-7;
-  const NodalContact c = nodal_contact(body, x, multiplier, penalty, true);
-  ASSERT_GT(c.multiplier_N, 0.0);
-  Mat3 minus_dF;
-  for (int j = 0; j < 3; ++j) {
-    const Vec3 e = h * Vec3::Unit(j);
-    minus_dF.col(j) = -(nodal_contact(body, x + e, multiplier, penalty, false).force_N -
-                        nodal_contact(body, x - e, multiplier, penalty, false).force_N) /
-                      (2 * h);
-  }
-  // The force is of order 1 N and kA = 2e4 N/m: differences of 1e-16 N over 2e-7 m leave
-  // 1e-9 N/m of round-off; 1e-5 relative to |K| ~ 2e4 is far above it.
-  EXPECT_LT((c.stiffness_N_per_m - 0.5 * (minus_dF + minus_dF.transpose())).norm(),
-            1e-5 * c.stiffness_N_per_m.norm());
-}
-
-TEST_F(MeshDerivatives, NodalContactStiffness) {
-  MeshBodyOptions options;
-  options.import = up_z();
-  const MeshBody body(surface(), options);
-  // The facet at angle 0.2 lies 0.05 cos(pi/16) = 0.04904 m from the axis: 0.0485 is 0.5 mm in.
-  expect_stiffness_matches(body, Vec3(0.0485 * std::cos(0.2), 0.0485 * std::sin(0.2), 0.03));
-  ConeOptions o;
-  o.axis = Vec3(0, 1, 1);
-  expect_stiffness_matches(Cone(o), Vec3(0.0499, 0.0, 0.0));
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ using namespace tightfit::testing;
 
 // Loads `path` expecting a BodyMeshError (a std::invalid_argument, which the application turns
 // into exit status 2) whose message holds every one of `words`.
-void expect_refused(const std::string& path, std::initializer_list<std::string> words,
+void expect_refused(const std::string& path, const std::vector<std::string>& words,
                     const MeshBodyOptions& options = {}) {
   try {
     load_mesh_body(path, options);
@@ -61,18 +61,24 @@ TEST(BodyMeshInput, WrongNumbersInObj) {
 }
 
 TEST(BodyMeshInput, TruncatedStlAndPly) {
-  const std::string stl = temporary_path("truncated.stl");
-  write_text(stl,
-             "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-             "vertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
-             "vertex 1 0");
-  expect_refused(stl, {"stl reader", "line 12"});
-  const std::string ply = temporary_path("truncated.ply");
-  write_text(ply,
-             "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-             "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
-             "end_header\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n");
-  expect_refused(ply, {"truncated", "4 vertices and 4 faces"});
+  struct Broken {
+    std::string file, text;
+    std::vector<std::string> words;
+  };
+  const Broken broken[] = {
+      {"truncated.stl",
+       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+       "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0",
+       {"stl reader", "line 12"}},
+      {"truncated.ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+       "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+       "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n",
+       {"truncated", "4 vertices and 4 faces"}}};
+  for (const Broken& b : broken) {
+    write_text(temporary_path(b.file), b.text);
+    expect_refused(temporary_path(b.file), b.words);
+  }
 }
 
 TEST(BodyMeshInput, MissingFileAndUnknownType) {

@@ -1,0 +1,48 @@
+#include "contact/coulomb_friction.h"
+
+#include <stdexcept>
+
+namespace tightfit {
+
+FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const SurfacePoint& at_x,
+                                  double normal_force_N, const Vec3& dN_dx,
+                                  const SurfaceLocation& anchor, const CoulombFrictionLaw& law) {
+  if (!(law.friction_coefficient >= 0))
+    throw std::invalid_argument("Friction/Coefficient: must not be negative");
+  if (!(law.tangential_penalty_N_per_m > 0))
+    throw std::invalid_argument("Friction/Tangential penalty: must be positive (N/m)");
+  FrictionResponse r;
+  if (normal_force_N <= 0.0) {
+    r.anchor = at_x.location;
+    return r;
+  }
+  const double k = law.tangential_penalty_N_per_m, mu = law.friction_coefficient;
+  const Vec3& n = at_x.outward_normal;
+  const Mat3& dn_dx = at_x.normal_derivative_per_m;
+  const Vec3 d = x - body.surface_point_m(anchor);
+  const Vec3 u = d - n.dot(d) * n;  // the slip: the anchor's offset in the tangent plane
+  // du/dx = P - n d^T dn/dx - (n.d) dn/dx, from u = d - n (n.d) with dd/dx = I.
+  const Mat3 du_dx =
+      Mat3::Identity() - n * n.transpose() - n * (d.transpose() * dn_dx) - n.dot(d) * dn_dx;
+  const double slip = u.norm(), limit = mu * normal_force_N;
+  if (k * slip <= limit) {
+    r.force_N = -k * u;
+    r.stiffness_N_per_m = k * du_dx;
+    r.anchor = anchor;
+    return r;
+  }
+  // Return mapping: the trial force -k u lies outside the cone |f| <= mu N; its projection
+  // onto the cone keeps the direction: f = -mu N s, s = u / |u|. With ds/dx = (I - s s^T)
+  // du/dx / |u|, -df/dx = mu s (dN/dx)^T + mu N (I - s s^T) du/dx / |u|.
+  const Vec3 s = u / slip;
+  r.slipping = true;
+  r.force_N = -limit * s;
+  r.stiffness_N_per_m =
+      mu * s * dN_dx.transpose() + limit / slip * (Mat3::Identity() - s * s.transpose()) * du_dx;
+  // The anchor slides towards x until the spring holds exactly mu N: k |u_new| = mu N.
+  const Vec3 slid = x - n.dot(d) * n - (limit / k) * s;
+  r.anchor = body.query(slid).location;
+  return r;
+}
+
+}  // namespace tightfit

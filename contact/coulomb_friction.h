@@ -1,0 +1,46 @@
+// Quasi-static Coulomb friction between a garment vertex and a rigid body, by a return mapping
+// onto the Coulomb cone from a tangential penalty trial force (docs/model.md, "Friction").
+//
+// Each vertex in contact keeps an anchor: the point of the body's own surface where it sticks
+// (a SurfaceLocation: face and barycentric coordinates, or an analytic body's parameters), so
+// that a body that grows or morphs carries the anchor with it and drags the fabric where it
+// sticks. With a = body.surface_point_m(anchor), the normal n at x and P = I - n n^T,
+//   u = P (x - a),  f_trial = -k_t u                        (k_t the tangential penalty, N/m)
+//   stick, |f_trial| <= mu N:  f = f_trial
+//   slip:                      f = -mu N u / |u|, and the anchor slides along u to where
+//                              |f_trial| = mu N (the return mapping)
+// N the normal contact force (the multiplier lambda of nodal_contact.h). The law is path
+// dependent: the anchor is history, updated only once a state is accepted (commit it after
+// the solve converged).
+#pragma once
+
+#include "contact/rigid_body.h"
+#include "core/types.h"
+
+namespace tightfit {
+
+struct CoulombFrictionLaw {
+  double friction_coefficient = 0.3;        // mu, >= 0
+  double tangential_penalty_N_per_m = 1e3;  // k_t > 0: the stiffness of sticking
+};
+
+struct FrictionResponse {
+  Vec3 force_N = Vec3::Zero();  // tangential, on the garment vertex
+  // -d(force)/dx, N/m: the consistent tangent of the return mapping, with the turning of the
+  // normal (dn/dx) and, while slipping, the change of mu N with x. Not symmetric when slipping.
+  Mat3 stiffness_N_per_m = Mat3::Zero();
+  bool slipping = false;
+  // The anchor after the return mapping: unchanged while sticking; the point the spring pulls
+  // from at the cone's edge while slipping. Keep it once the state is accepted.
+  SurfaceLocation anchor;
+};
+
+// `at_x` is body.query(x_m) (its normal, dn/dx and location); `normal_force_N` is N >= 0 and
+// `normal_force_gradient_N_per_m` dN/dx (nodal_contact.h: -kA dg/dx while in contact). A vertex
+// out of contact (N = 0) feels no friction and its anchor resets to its closest point.
+// Throws std::invalid_argument for mu < 0 or k_t <= 0.
+FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x_m, const SurfacePoint& at_x,
+                                  double normal_force_N, const Vec3& normal_force_gradient_N_per_m,
+                                  const SurfaceLocation& anchor, const CoulombFrictionLaw& law);
+
+}  // namespace tightfit
