@@ -104,7 +104,7 @@ PanelOutline panel_of(const RawPiece& raw, double scale, const std::string& file
   else if (!raw.boundary_closed)
     throw PatternError(where +
                        ": the boundary is open (not flagged closed, ends away from its start)");
-  if (v.size() < 3) throw PatternError(where + ": the boundary has fewer than three vertices");
+  if (v.size() < 2) throw PatternError(where + ": the boundary has fewer than two vertices");
   const int n = static_cast<int>(v.size());
   // Corners: the vertices at turn points.
   std::vector<bool> corner(n, raw.turn_points.empty());

@@ -91,4 +91,24 @@ std::vector<std::pair<std::string, std::string>> parse_panel_edges(const std::st
   return list;
 }
 
+namespace {
+
+PanelOutline& panel_named(Pattern& pattern, const std::string& name, const std::string& what) {
+  for (auto& outline : pattern.panels)
+    if (outline.name == name) return outline;
+  throw PatternError(what + ": no panel '" + name + "'");
+}
+
+}  // namespace
+
+void declare_folds(Pattern& pattern, const std::string& panel_edges) {
+  for (const auto& [panel, edge] : parse_panel_edges(panel_edges))
+    panel_named(pattern, panel, "fold edges").fold_edge = edge;
+}
+
+void declare_mirrored(Pattern& pattern, const std::vector<std::string>& panels) {
+  for (const std::string& panel : panels)
+    panel_named(pattern, panel, "mirrored panels").mirrored_copy = true;
+}
+
 }  // namespace tightfit::pattern

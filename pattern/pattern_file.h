@@ -20,4 +20,9 @@ std::vector<SeamSpec> parse_seam_list(const std::string& text);
 // "front:1, back:1": panel and edge pairs separated by commas.
 std::vector<std::pair<std::string, std::string>> parse_panel_edges(const std::string& text);
 
+// Marks the pieces cut on the fold ("PANEL:EDGE, ...") and those cut twice mirrored (panel
+// names). Throws PatternError naming a panel that does not exist.
+void declare_folds(Pattern& pattern, const std::string& panel_edges);
+void declare_mirrored(Pattern& pattern, const std::vector<std::string>& panels);
+
 }  // namespace tightfit::pattern
