@@ -13,7 +13,11 @@ struct StaticNewton::Factorisation {
   Eigen::Index analysed_nonzeros = -1, analysed_size = -1;
 };
 
-StaticNewton::StaticNewton() : factorisation_(std::make_unique<Factorisation>()) {}
+StaticNewton::StaticNewton() : factorisation_(std::make_unique<Factorisation>()) {
+  // A matrix that is not positive definite is expected (the pseudo time step then shrinks):
+  // no warning on the console.
+  factorisation_->llt.cholmod().print = 0;
+}
 StaticNewton::~StaticNewton() = default;
 
 namespace {
