@@ -241,7 +241,7 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
         1.0 / damping_per_s_, parameters_.maximum_newton_iterations - frame);
     frame += r.iterations;
     residual = r.residual_N;
-    newton_history = r.history;
+    newton_history += (newton_history.empty() ? "" : "; ") + r.history;
     if (r.converged) return;
     std::ostringstream what;
     what << "did not reach equilibrium (implicit integrator, " << frame
