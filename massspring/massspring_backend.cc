@@ -79,6 +79,20 @@ void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
                                 std::to_string(problem_.mesh->n_vertices) + " vertices");
   x_ = positions_m;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
+  last_ = before_last_ = Settled{};
+}
+
+void MassSpringBackend::predict(double alpha) {
+  const double span = last_.alpha - before_last_.alpha;
+  if (!std::isfinite(span) || span == 0.0 || alpha == last_.alpha) return;
+  // Linear in alpha through the last two stable states: the FE backend's predictor.
+  const double ratio = (alpha - last_.alpha) / span;
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    x_[i] = last_.x[i] + ratio * (last_.x[i] - before_last_.x[i]);
+    multiplier_N_[i] =
+        std::max(0.0, last_.multiplier_N[i] +
+                          ratio * (last_.multiplier_N[i] - before_last_.multiplier_N[i]));
+  }
 }
 
 void MassSpringBackend::internal_forces(const std::vector<Vec3>& x,
@@ -201,6 +215,8 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     flat_start_detail = detail.str();
   }
 
+  const bool implicit = parameters_.integrator == Integrator::implicit;
+  if (implicit) predict(step.alpha);
   time_step_s_ = choose_time_step_s();
   damping_per_s_ = parameters_.damping_per_s > 0
                        ? parameters_.damping_per_s
@@ -227,7 +243,6 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   // Damped RK4 from the current state until the stop rule holds; `frame` counts on over the
   // settles of one step (the frame limit is the step's). A stalled window halves the time
   // step (residual_history.h) until the halvings run out.
-  const bool implicit = parameters_.integrator == Integrator::implicit;
   std::string newton_history;
   // The implicit route: Newton from the current state to the same stop rule; `frame` counts
   // its factorisations.
@@ -311,6 +326,10 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     ++updates;
   }
   const double penetration_m = contact_penetration_m(false);
+  if (implicit) {
+    before_last_ = std::move(last_);
+    last_ = Settled{step.alpha, x_, multiplier_N_};
+  }
 
   StepReport report;
   report.converged = true;
