@@ -22,6 +22,7 @@
 #include "massspring/static_newton.h"
 #include "massspring/triangle_elements.h"
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -93,6 +94,17 @@ class MassSpringBackend final : public Backend {
   std::vector<double> multiplier_N_;
   DampedRk4 integrator_;
   StaticNewton newton_;
+  // Implicit integrator: the stable states (and multipliers) of the last two load steps and
+  // their alphas (NaN until known; set_positions forgets them), from which each step's start
+  // is extrapolated linearly in alpha.
+  struct Settled {
+    double alpha = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Vec3> x;
+    std::vector<double> multiplier_N;
+  };
+  Settled last_, before_last_;
+  // Moves x_ and multiplier_N_ to the extrapolation of the last two stable states at `alpha`.
+  void predict(double alpha);
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
 };
