@@ -63,6 +63,8 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   }
   v_.assign(n, Vec3::Zero());
   multiplier_N_.assign(n, 0.0);
+  friction_ = FrictionAnchors(problem_.friction_coefficient, problem_.tangential_stiffness_Pa_per_m,
+                              rest_vertex_area_m2_);
   force_.assign(n, Vec3::Zero());
   if (parameters_.placement == Placement::flat_panels)
     flat_start_ = std::make_unique<FlatPanelStart>(problem_, parameters_);
@@ -77,6 +79,37 @@ void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
                                 std::to_string(problem_.mesh->n_vertices) + " vertices");
   x_ = positions_m;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
+  // A garment placed anew sticks where it first touches: its anchors are its closest points.
+  if (problem_.body) friction_.place(*problem_.body, x_);
+}
+
+Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slipping) const {
+  const SurfacePoint s = problem_.body->query(x);
+  const double lambda_N = contact_multiplier_N(
+      multiplier_N_[i], problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i],
+      s.signed_distance_m);
+  Vec3 f = lambda_N * s.outward_normal;
+  if (friction_.active() && lambda_N > 0.0) {
+    const FrictionResponse r = friction_.response(int(i), *problem_.body, x, s, lambda_N);
+    f += r.force_N;
+    if (slipping) *slipping = r.slipping;
+  }
+  return f;
+}
+
+int MassSpringBackend::commit_friction_anchors() {
+  if (!friction_.active() || !problem_.body) return 0;
+  int slipping = 0;
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    const SurfacePoint s = problem_.body->query(x_[i]);
+    const double lambda_N = contact_multiplier_N(
+        multiplier_N_[i], problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i],
+        s.signed_distance_m);
+    const FrictionResponse r = friction_.response(int(i), *problem_.body, x_[i], s, lambda_N);
+    friction_.commit(int(i), r);
+    slipping += r.slipping;
+  }
+  return slipping;
 }
 
 void MassSpringBackend::internal_forces(const std::vector<Vec3>& x,
@@ -94,8 +127,7 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   const double k = problem_.contact_stiffness_Pa_per_m;
   double largest_squared = 0.0, total_squared = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (body && k > 0)
-      force[i] += penalty_force_N(body->query(x[i]), k, rest_vertex_area_m2_[i], multiplier_N_[i]);
+    if (body && k > 0) force[i] += contact_force_N(i, x[i]);
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
     const double squared = force[i].squaredNorm();
@@ -126,8 +158,10 @@ double MassSpringBackend::choose_time_step_s() const {
   elements_.add_stiffness_bounds(x_, stiffness);
   hinges_.add_stiffness_bounds(x_, stiffness);
   if (problem_.body)
-    for (std::size_t i = 0; i < x_.size(); ++i)
+    for (std::size_t i = 0; i < x_.size(); ++i) {
       stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
+      if (friction_.active()) stiffness[i] += friction_.tangential_stiffness_N_per_m(int(i));
+    }
   return stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety);
 }
 
@@ -162,7 +196,10 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
            << flat.closed_below_m << " m) after " << flat.frames << " frames, " << flat.wall_seconds
            << " s; then ";
     flat_start_detail = detail.str();
+    if (problem_.body) friction_.place(*problem_.body, x_);
   }
+  if (problem_.body && friction_.active() && !friction_.placed())
+    friction_.place(*problem_.body, x_);
 
   time_step_s_ = choose_time_step_s();
   damping_per_s_ = parameters_.damping_per_s > 0
@@ -233,6 +270,7 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     ++updates;
   }
   const double penetration_m = contact_penetration_m(false);
+  const int slipping = commit_friction_anchors();
 
   StepReport report;
   report.converged = true;
@@ -260,6 +298,11 @@ SurfaceState MassSpringBackend::state() const {
   if (problem_.body) {
     apply_penalty_contact(*problem_.body, problem_.contact_stiffness_Pa_per_m, rest_vertex_area_m2_,
                           s, multiplier_N_);
+    // The friction force (its return mapping from the anchors of this state's step) joins the
+    // normal one, so the extractor reads it as friction traction.
+    if (friction_.active())
+      for (std::size_t i = 0; i < x_.size(); ++i)
+        if (s.in_contact[i]) s.contact_force_N[i] = contact_force_N(i, x_[i]);
   } else {
     s.contact_force_N.assign(x_.size(), Vec3::Zero());
     s.in_contact.assign(x_.size(), 0);
