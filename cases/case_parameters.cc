@@ -435,7 +435,13 @@ CaseParameters CaseFile::parameters() const {
 
 std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
                                                   const Problem& problem) const {
-  return backend_registry().find(name).create(problem, *prm_);
+  const BackendEntry& entry = backend_registry().find(name);
+  if (problem.friction_coefficient > 0 && !entry.applies_friction)
+    throw std::invalid_argument("Contact/Friction coefficient = " +
+                                std::to_string(problem.friction_coefficient) + ": the " + name +
+                                " backend has no friction yet; set it to 0 or use Solver/Backend "
+                                "= massspring");
+  return entry.create(problem, *prm_);
 }
 
 void CaseFile::print(std::ostream& out, ParameterFormat format) const {

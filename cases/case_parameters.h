@@ -125,7 +125,8 @@ class CaseFile {
   void set(const std::string& assignment);
   // The values now held, checked; throws std::invalid_argument naming the entry at fault.
   CaseParameters parameters() const;
-  // Creates the backend called `name` from its subsection.
+  // Creates the backend called `name` from its subsection. Throws std::invalid_argument when the
+  // problem has friction and the backend does not apply it.
   std::unique_ptr<Backend> create_backend(const std::string& name, const Problem& problem) const;
   // Every entry with its documentation and default: as readable text, as a .prm file to
   // start a case from, or as JSON (with each entry's pattern: docs/parameters.md is made from it).

@@ -97,6 +97,11 @@ class MassSpringBackend final : public Backend {
   std::vector<double> multiplier_N_;
   // Coulomb friction's anchors (inactive when Problem::friction_coefficient is 0).
   FrictionAnchors friction_;
+  // The friction force on each particle at the accepted state, from the anchors the step began
+  // with (the force the state is in equilibrium with); valid once the step has committed. The
+  // committed anchors give it again only to within the projection of mu N / k_t onto the body.
+  std::vector<Vec3> accepted_friction_N_;
+  bool friction_committed_ = false;
   DampedRk4 integrator_;
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
