@@ -183,6 +183,17 @@ void declare_contact(ParameterHandler& prm) {
                     "away, so beta sets only their speed and the time step; with Mass "
                     "spring/Contact multiplier updates = 0 the penetration stays and "
                     "docs/model.md gives its effect on the pressure.");
+  prm.declare_entry("Friction coefficient", "0", Patterns::Double(0),
+                    "Coulomb friction coefficient mu between garment and body (-); 0 = "
+                    "frictionless (the paper's cylinder). Quasi-static and path dependent: each "
+                    "vertex sticks to an anchor on the body's own surface (carried as the body "
+                    "grows or morphs) until its tangential force reaches mu times its normal "
+                    "force, then slips (docs/model.md, \"Friction\").");
+  prm.declare_entry("Tangential penalty ratio", "1", Patterns::Double(1e-3),
+                    "The friction's regularisation (-): a sticking vertex is held to its anchor "
+                    "by a spring of this times the normal penalty k A0, so it creeps |f| / k_t. "
+                    "Larger is closer to exact sticking and, on the mass-spring backend, a "
+                    "smaller time step; the results do not depend on it (docs/model.md).");
   prm.leave_subsection();
 }
 
@@ -305,6 +316,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
 
   prm.enter_subsection("Contact");
   c.penalty_factor = prm.get_double("Penalty factor");
+  c.friction_coefficient = prm.get_double("Friction coefficient");
+  c.tangential_penalty_ratio = prm.get_double("Tangential penalty ratio");
   prm.leave_subsection();
 
   prm.enter_subsection("Protocol");
@@ -422,7 +435,13 @@ CaseParameters CaseFile::parameters() const {
 
 std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
                                                   const Problem& problem) const {
-  return backend_registry().find(name).create(problem, *prm_);
+  const BackendEntry& entry = backend_registry().find(name);
+  if (problem.friction_coefficient > 0 && !entry.applies_friction)
+    throw std::invalid_argument("Contact/Friction coefficient = " +
+                                std::to_string(problem.friction_coefficient) + ": the " + name +
+                                " backend has no friction yet; set it to 0 or use Solver/Backend "
+                                "= massspring");
+  return entry.create(problem, *prm_);
 }
 
 void CaseFile::print(std::ostream& out, ParameterFormat format) const {

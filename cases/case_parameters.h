@@ -1,6 +1,6 @@
 // Everything a case file (.prm) says, as plain structs: the scenario's parts (garment, body,
-// placement, constraints, load steps, measurements; docs/scenarios.md) and the solver's. The deal.II ParameterHandler that
-// reads them stays inside case_parameters.cc.
+// placement, constraints, load steps, measurements; docs/scenarios.md) and the solver's. The
+// deal.II ParameterHandler that reads them stays inside case_parameters.cc.
 #pragma once
 
 #include "cases/measurement.h"
@@ -99,6 +99,8 @@ struct CaseParameters {
   PlacementSettings placement;
   ConstraintSettings constraints;
   double penalty_factor = 100.0;
+  double friction_coefficient = 0.0;      // Contact/Friction coefficient, mu
+  double tangential_penalty_ratio = 1.0;  // Contact/Tangential penalty ratio, k_t / (k A0)
   ProtocolSettings protocol;
   PressureSettings pressure;
   std::vector<NamedMeasurement> measurements;
@@ -123,7 +125,8 @@ class CaseFile {
   void set(const std::string& assignment);
   // The values now held, checked; throws std::invalid_argument naming the entry at fault.
   CaseParameters parameters() const;
-  // Creates the backend called `name` from its subsection.
+  // Creates the backend called `name` from its subsection. Throws std::invalid_argument when the
+  // problem has friction and the backend does not apply it.
   std::unique_ptr<Backend> create_backend(const std::string& name, const Problem& problem) const;
   // Every entry with its documentation and default: as readable text, as a .prm file to
   // start a case from, or as JSON (with each entry's pattern: docs/parameters.md is made from it).
