@@ -27,5 +27,7 @@ PartEntry<PlacementMaker> flat_on_plane_placement_entry();
 PartEntry<MeasurementMaker> cylinder_theory_measurement_entry();
 PartEntry<MeasurementMaker> angular_profile_measurement_entry();
 PartEntry<MeasurementMaker> weight_on_plane_measurement_entry();
+PartEntry<MeasurementMaker> air_pack_sensors_measurement_entry();
+PartEntry<MeasurementMaker> stamps_measurement_entry();
 
 }  // namespace tightfit
