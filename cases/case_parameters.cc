@@ -109,8 +109,10 @@ void declare_garment(ParameterHandler& prm) {
 
 void declare_material(ParameterHandler& prm) {
   prm.enter_subsection("Material");
-  prm.declare_entry("Law", "linear biot",
-                    Patterns::Selection("linear biot|st venant kirchhoff|neo hookean"),
+  std::string law_names;
+  for (const std::string& name : material_law_names())
+    law_names += (law_names.empty() ? "" : "|") + name;
+  prm.declare_entry("Law", "linear biot", Patterns::Selection(law_names),
                     material_law_descriptions());
   prm.declare_entry("Stiffness weft", "130", Patterns::Double(0),
                     "Membrane stiffness E t along the weft/course (N/m; 1 N/cm = 100 N/m). "
@@ -129,6 +131,22 @@ void declare_material(ParameterHandler& prm) {
   prm.declare_entry("Neo-Hookean shear modulus", "85470.0854700855", Patterns::Double(0),
                     "Shear modulus G of the neo-hookean law (Pa). Default: 3 G t = 100 N/m, "
                     "the mean of the two stiffnesses.");
+  const FabricParameters table2;
+  prm.declare_entry("Tension curve weft", format_curve_points(table2.tension_curve_weft),
+                    Patterns::Anything(),
+                    "The tensile curves law's weft/course curve: strain:force pairs, engineering "
+                    "strain (l - l0) / l0 (-) against force per unit rest width (N/m), strictly "
+                    "increasing, through 0:0; interpolated by a monotone C1 cubic, straight "
+                    "beyond the data. Default: Table 2 (0.245 and 0.49 N/cm).");
+  prm.declare_entry("Tension curve warp", format_curve_points(table2.tension_curve_warp),
+                    Patterns::Anything(),
+                    "The tensile curves law's warp/wale curve, as Tension curve weft (N/m). "
+                    "Default: Table 2.");
+  prm.declare_entry("Poisson curve", format_curve_points(table2.poisson_curve),
+                    Patterns::Anything(),
+                    "The tensile curves law's nu12 against weft strain: strain:coefficient pairs "
+                    "(-), constant beyond the data; one pair for a constant coefficient. "
+                    "Default: Table 2 (0.3499 at the lower load, 0.2021 at the higher).");
   prm.leave_subsection();
 }
 
@@ -286,6 +304,11 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   c.fabric.thickness_m = prm.get_double("Thickness");
   c.fabric.areal_density_kg_per_m2 = prm.get_double("Areal density");
   c.fabric.neo_hookean_shear_modulus_Pa = prm.get_double("Neo-Hookean shear modulus");
+  c.fabric.tension_curve_weft =
+      parse_curve_points(prm.get("Tension curve weft"), "Material/Tension curve weft");
+  c.fabric.tension_curve_warp =
+      parse_curve_points(prm.get("Tension curve warp"), "Material/Tension curve warp");
+  c.fabric.poisson_curve = parse_curve_points(prm.get("Poisson curve"), "Material/Poisson curve");
   prm.leave_subsection();
 
   prm.enter_subsection("Body");
@@ -335,8 +358,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
                            : area == "mixed voronoi" ? VertexAreaDefinition::mixed_voronoi
                                                      : VertexAreaDefinition::adjacent_triangles;
   c.pressure.definition = prm.get("Definition") == "contact traction"
-                             ? PressureDefinition::contact_traction
-                             : PressureDefinition::garment_force;
+                              ? PressureDefinition::contact_traction
+                              : PressureDefinition::garment_force;
   prm.leave_subsection();
 
   prm.enter_subsection("Measurements");
@@ -358,6 +381,7 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   };
   require(c.protocol.up.norm() > 0, "Protocol/Up must not be zero");
   c.fabric.validate();
+  if (c.law == "tensile curves") TensileCurves check(c.fabric.tensile_curves());
   return c;
 }
 

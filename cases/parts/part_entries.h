@@ -29,5 +29,7 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry();
 PartEntry<MeasurementMaker> cylinder_theory_measurement_entry();
 PartEntry<MeasurementMaker> angular_profile_measurement_entry();
 PartEntry<MeasurementMaker> weight_on_plane_measurement_entry();
+PartEntry<MeasurementMaker> air_pack_sensors_measurement_entry();
+PartEntry<MeasurementMaker> stamps_measurement_entry();
 
 }  // namespace tightfit
