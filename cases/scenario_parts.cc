@@ -46,6 +46,8 @@ const PartRegistry<MeasurementMaker>& measurement_kinds() {
     r.add(cylinder_theory_measurement_entry());
     r.add(angular_profile_measurement_entry());
     r.add(weight_on_plane_measurement_entry());
+    r.add(regions_measurement_entry());
+    r.add(pictures_measurement_entry());
     return r;
   }();
   return registry;

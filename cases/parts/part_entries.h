@@ -27,5 +27,7 @@ PartEntry<PlacementMaker> flat_on_plane_placement_entry();
 PartEntry<MeasurementMaker> cylinder_theory_measurement_entry();
 PartEntry<MeasurementMaker> angular_profile_measurement_entry();
 PartEntry<MeasurementMaker> weight_on_plane_measurement_entry();
+PartEntry<MeasurementMaker> regions_measurement_entry();
+PartEntry<MeasurementMaker> pictures_measurement_entry();
 
 }  // namespace tightfit
