@@ -4,6 +4,7 @@
 #include "app/compare_command.h"
 #include "app/convergence_command.h"
 #include "app/mpi_session.h"
+#include "app/pattern_command.h"
 #include "app/run_command.h"
 #include "cases/case_parameters.h"
 
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     if (cl.command == "run") return run_command(cl, out);
     if (cl.command == "compare") return compare_command(cl, out);
     if (cl.command == "convergence") return convergence_command(cl, out);
+    if (cl.command == "pattern") return pattern_command(cl, out);
     std::cerr << "tightfit: '" << cl.command << "' is not available yet\n";
     return 2;
   } catch (const UsageError& e) {

@@ -49,8 +49,8 @@ FlatPanelStart::FlatPanelStart(const Problem& problem, const MassSpringParameter
   rest_vertex_area_m2_ = rest_vertex_areas_m2(panels_.mesh);
   // A constrained welded vertex constrains every copy: the flat panels keep the sewn tube's
   // axial coordinates, so the held ends start where the sewn start would put them.
-  constrained_ = ConstrainedDirections(problem_.constraints, welded.n_vertices)
-                     .copies(welded.welded_index);
+  constrained_ =
+      ConstrainedDirections(problem_.constraints, welded.n_vertices).copies(welded.welded_index);
   mean_edge_m_ = mean_rest_edge_length_m(welded);
   size_m_ = std::sqrt(rest_area(welded));
   // Fails early (fewer than two panels) rather than at the first load step.
