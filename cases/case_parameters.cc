@@ -256,6 +256,13 @@ void declare_output(ParameterHandler& prm) {
   prm.declare_entry("Write VTU", "true", Patterns::Bool(),
                     "Write one VTU per load step for the garment and the body, with .pvd "
                     "time series for ParaView.");
+  prm.declare_entry("Body pressure", "true", Patterns::Bool(),
+                    "The body VTU carries the garment's pressure mapped onto the body's surface "
+                    "(pressure_Pa, pressure_mmHg, under_garment), on the body's display surface "
+                    "refined to Body edge length (docs/measurements.md).");
+  prm.declare_entry("Body edge length", "0", Patterns::Double(0),
+                    "Longest edge of the body's surface in the body VTU and the pictures, m; 0: "
+                    "half the garment's mean edge length.");
   prm.leave_subsection();
 }
 
@@ -370,6 +377,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   prm.enter_subsection("Output");
   c.output.directory = prm.get("Directory");
   c.output.write_vtu = prm.get_bool("Write VTU");
+  c.output.body_pressure = prm.get_bool("Body pressure");
+  c.output.body_edge_length_m = prm.get_double("Body edge length");
   prm.leave_subsection();
 
   prm.enter_subsection("Solver");

@@ -81,6 +81,11 @@ struct NamedMeasurement {
 struct OutputSettings {
   std::string directory = "output";
   bool write_vtu = true;
+  // The body VTU carries the garment's pressure on a refined copy of the body's surface
+  // (cases/body_surface_pressure.h), its edges at most body_edge_length_m (0: half the
+  // garment's mean edge length).
+  bool body_pressure = true;
+  double body_edge_length_m = 0.0;
   // False for a run that only wants the numbers back (no file at all).
   bool write_files = true;
   // This process among the MPI ranks of the run. Every rank holds the whole result: the first

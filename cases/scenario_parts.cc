@@ -50,6 +50,8 @@ const PartRegistry<MeasurementMaker>& measurement_kinds() {
     r.add(weight_on_plane_measurement_entry());
     r.add(air_pack_sensors_measurement_entry());
     r.add(stamps_measurement_entry());
+    r.add(regions_measurement_entry());
+    r.add(pictures_measurement_entry());
     return r;
   }();
   return registry;

@@ -1,5 +1,6 @@
 #include "cases/scenario_run.h"
 
+#include "cases/body_surface_pressure.h"
 #include "core/units.h"
 #include "io/csv_table.h"
 #include "io/pvd_writer.h"
@@ -17,10 +18,22 @@
 namespace tightfit {
 
 std::vector<std::string> pressure_table_columns() {
-  return {"step",          "alpha",          "p_mean_Pa",          "p_std_Pa",
-          "p_theory_Pa",   "rel_error",      "p_mean_gf_cm2",      "p_mean_mmHg",
-          "contact_fraction", "p_min_Pa",    "p_max_Pa",           "friction_max_Pa",
-          "vertex_area",   "pressure_definition", "iterations",    "residual_N",
+  return {"step",
+          "alpha",
+          "p_mean_Pa",
+          "p_std_Pa",
+          "p_theory_Pa",
+          "rel_error",
+          "p_mean_gf_cm2",
+          "p_mean_mmHg",
+          "contact_fraction",
+          "p_min_Pa",
+          "p_max_Pa",
+          "friction_max_Pa",
+          "vertex_area",
+          "pressure_definition",
+          "iterations",
+          "residual_N",
           "wall_time_s"};
 }
 
@@ -30,7 +43,8 @@ std::vector<CsvCell> pressure_row(const StepMeasurement& m) {
   const PressureSummary& s = m.summary;
   double friction_max_Pa = 0.0;
   for (std::size_t v = 0; v < m.field.friction_traction_Pa.size(); ++v)
-    if (m.field.contact[v]) friction_max_Pa = std::max(friction_max_Pa, m.field.friction_traction_Pa[v]);
+    if (m.field.contact[v])
+      friction_max_Pa = std::max(friction_max_Pa, m.field.friction_traction_Pa[v]);
   std::vector<CsvCell> row{m.step,
                            m.alpha,
                            s.mean_Pa,
@@ -93,8 +107,7 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   backend->set_positions(scenario.initial_positions());
 
   std::unique_ptr<CsvTable> table;
-  if (write_tables)
-  {
+  if (write_tables) {
     std::vector<std::string> columns = pressure_table_columns();
     columns.insert(columns.end(), result.columns.begin(), result.columns.end());
     table = std::make_unique<CsvTable>(path("pressure.csv"), columns);
@@ -143,7 +156,10 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
     if (write_series) {
       char name[64];
       std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
-      write_body_vtu(path(name), scenario.body->body().display_mesh());
+      if (output.body_pressure)
+        body_pressure_vtu(body_surface_pressure(scenario, m), m.field).write(path(name));
+      else
+        write_body_vtu(path(name), scenario.body->body().display_mesh());
       body_series->add(m.alpha, name);
     }
     print_progress(log, m, scenario.alphas.size());
@@ -151,6 +167,8 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   for (const auto& measurement : measurements) {
     measurement->after_run(scenario, result.steps, files);
     for (const std::string& f : measurement->file_names()) result.files.push_back(f);
+    for (TextTable& t : measurement->summary_tables(scenario, result.steps))
+      result.tables.push_back(std::move(t));
   }
   result.completed = result.failure.empty();
   return result;

@@ -31,5 +31,7 @@ PartEntry<MeasurementMaker> angular_profile_measurement_entry();
 PartEntry<MeasurementMaker> weight_on_plane_measurement_entry();
 PartEntry<MeasurementMaker> air_pack_sensors_measurement_entry();
 PartEntry<MeasurementMaker> stamps_measurement_entry();
+PartEntry<MeasurementMaker> regions_measurement_entry();
+PartEntry<MeasurementMaker> pictures_measurement_entry();
 
 }  // namespace tightfit
