@@ -23,8 +23,8 @@ struct VertexConstraint {
     fixed,                 // the vertices do not move at all
   };
   Kind kind = Kind::held_along_direction;
-  std::string group;          // the vertex group's name, for messages
-  std::vector<int> vertices;  // welded vertex indices
+  std::string group;               // the vertex group's name, for messages
+  std::vector<int> vertices;       // welded vertex indices
   Vec3 direction = Vec3::UnitZ();  // held_along_direction only
 };
 
@@ -49,8 +49,9 @@ struct LoadStep {
   bool gravity_on = false;
 };
 
+// What solve() reports of a step it finished: it returns only at equilibrium (residual below
+// the stop rule's threshold) and throws SolverError otherwise.
 struct StepReport {
-  bool converged = false;
   int iterations = 0;        // frames (mass-spring) or Newton steps (FE)
   double residual_N = 0.0;   // largest residual force on a free vertex at the end
   double tolerance_N = 0.0;  // the stop rule's threshold

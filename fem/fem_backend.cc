@@ -6,6 +6,7 @@
 #include "contact/cylinder.h"
 #include "contact/nodal_contact.h"
 #include "core/constrained_directions.h"
+#include "core/interruption.h"
 #include "core/mesh_geometry.h"
 #include "fem/membrane_kernel.h"
 #include "fem/petsc_linear_solver.h"
@@ -176,6 +177,7 @@ class FemBackend::Implementation {
   std::vector<double> traction_Pa_;
   std::vector<double> history_N_;
   double max_penetration_m_ = 0.0;
+  const std::vector<double>& multipliers_N() const { return multiplier_N_; }
 
  private:
   void build_mesh();
@@ -242,7 +244,7 @@ class FemBackend::Implementation {
   std::vector<std::vector<DofTriple>> node_copies_;
   std::vector<std::array<int, 2>> edge_ends_;      // welded edge -> its two welded vertices
   std::map<std::array<int, 2>, int> edge_index_;   // sorted welded vertex pair -> welded edge
-  ConstrainedDirections node_constrained_;  // the Problem's constraints at every node
+  ConstrainedDirections node_constrained_;         // the Problem's constraints at every node
   std::vector<std::array<int, 3>> cell_vertices_;  // per cell, its corners' welded vertices
   // The linear hat of each cell corner at the quadrature points [q][v], and per cell the ratio
   // of grain to layout area (quadrature weights are layout areas).
@@ -599,7 +601,7 @@ void FemBackend::Implementation::cell_kernel(unsigned int cell, const dealii::Ve
   for (unsigned int q = 0; q < cell_JxW_m2_[cell].size(); ++q) {
     std::copy_n(cell_grad_grain_[cell].begin() + q * n_element_nodes, n_element_nodes,
                 grad_grain.begin());
-    // F = dx/dX_grain = sum_a x_a grad_N_a^T (architecture.md: the membrane's 3x2 gradient).
+    // F = dx/dX_grain = sum_a x_a grad_N_a^T (the membrane's 3x2 gradient).
     Mat32 F = Mat32::Zero();
     for (unsigned int i = 0; i < n_local; ++i)
       F.row(local_component_[i]) += x[dofs[i]] * grad_grain[local_node_[i]].transpose();
@@ -706,6 +708,11 @@ int FemBackend::Implementation::newton(const LoadStep& step, std::vector<int>& k
     history_N_.push_back(residual_N);
     if (!std::isfinite(residual_N)) fail(step, "the residual is not finite", residual_N);
     if (residual_N <= tolerance_N) return iteration;
+    // Collective, so that every rank stops at the same iteration whichever got the signal.
+    throw_if_interrupted(dealii::Utilities::MPI::max(interruption_signal(), comm_),
+                         "during load step " + std::to_string(step.index) + " (alpha " +
+                             std::to_string(step.alpha) + ") at Newton iteration " +
+                             std::to_string(iteration));
     // Inexact Newton (Eisenstat and Walker's second forcing term): solve each system only as
     // far as the residual's own decrease warrants, eta = 0.9 (|R_k| / |R_k-1|)^2 within
     // [linear tolerance, 1e-2]; convergence stays superlinear. Where the residual fell by less
@@ -893,7 +900,6 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   }
   update_state();
 
-  report.converged = true;
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.size() << " AL rounds, |R|_max N: ";
   for (std::size_t r = 0; r < rounds.size(); ++r)
@@ -1096,6 +1102,10 @@ std::vector<std::pair<std::string, std::vector<double>>> FemBackend::extra_point
 
 std::vector<double> FemBackend::contact_traction_Pa() const {
   return impl_->traction_Pa_;
+}
+
+const std::vector<double>& FemBackend::nodal_contact_force_N() const {
+  return impl_->multipliers_N();
 }
 
 double FemBackend::max_penetration_m() const {
