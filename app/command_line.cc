@@ -1,5 +1,7 @@
 #include "app/command_line.h"
 
+#include <cstdlib>
+
 namespace tightfit {
 
 std::string usage_text() {
@@ -14,6 +16,12 @@ Usage:
       Runs the case on both backends on the same mesh and writes compare.csv.
   tightfit convergence CASE.prm [--levels N] [--output DIR] [--set ...]
       Runs the case on N meshes, halving the edge length each time, on both backends.
+  tightfit pattern FILE [--edge-length L] [--seams "..."] [--folds "..."] [--output DIR]
+      Reads a sewing pattern (.svg, .json, .dxf), prints its panels, edge lengths and seam
+      length mismatches, meshes it (target edge length L in m, default 0.01) and writes the
+      meshed panels (pattern.vtu) and a drawing of the outlines and seams (outlines.png) into
+      DIR (default output/pattern). --seams and --folds add declarations as in the case file's
+      Garment/Pattern file section (docs/patterns.md).
   tightfit --print-parameters [--prm | --json]
       Lists every parameter with its documentation, unit and default (--prm: as a case file to
       start from; --json: with each entry's allowed values).
@@ -46,7 +54,7 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     }
     return cl;
   }
-  if (first != "run" && first != "compare" && first != "convergence")
+  if (first != "run" && first != "compare" && first != "convergence" && first != "pattern")
     throw UsageError("unknown command '" + first + "'");
   cl.command = first;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -69,11 +77,25 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
         throw UsageError("--levels needs a whole number, not '" + text + "'");
       }
       if (cl.levels < 2 || cl.levels > 8) throw UsageError("--levels must be between 2 and 8");
+    } else if (first == "pattern" && a == "--edge-length") {
+      const std::string& text = value();
+      char* end = nullptr;
+      cl.pattern_edge_length_m = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(cl.pattern_edge_length_m > 0))
+        throw UsageError("--edge-length needs a positive length in m, not '" + text + "'");
+    } else if (first == "pattern" && a == "--seams") {
+      cl.pattern_seams = value();
+    } else if (first == "pattern" && a == "--folds") {
+      cl.pattern_folds = value();
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError("unknown option '" + a + "'");
     } else {
       cl.case_files.push_back(a);
     }
+  }
+  if (cl.command == "pattern") {
+    if (cl.case_files.size() != 1) throw UsageError("pattern takes one pattern file");
+    return cl;
   }
   if (cl.case_files.empty()) throw UsageError(cl.command + " needs a case file (.prm)");
   if (cl.command != "run" && cl.case_files.size() > 1)

@@ -9,13 +9,16 @@
 namespace tightfit {
 
 struct CommandLine {
-  std::string command;  // run, compare, convergence, print-parameters, help, version
+  std::string command;  // run, compare, convergence, pattern, print-parameters, help, version
   std::vector<std::string> case_files;
   std::string output_dir;                  // empty: the case's Output/Directory
   std::vector<std::string> overrides;      // "Path/To/Entry=value"
   int levels = 3;                          // convergence: number of meshes
   std::string parameters_format = "text";  // print-parameters: text, prm or json
-  int rank = 0;                            // this process among the MPI ranks
+  // pattern: target mesh edge length (m), seams and fold edges besides the file's.
+  double pattern_edge_length_m = 0.01;
+  std::string pattern_seams, pattern_folds;
+  int rank = 0;  // this process among the MPI ranks
   int n_ranks = 1;
   // Reports an error of this rank alone and ends every rank (OutputSettings::end_every_rank).
   std::function<void(const std::string&)> end_every_rank;

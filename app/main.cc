@@ -4,6 +4,7 @@
 #include "app/compare_command.h"
 #include "app/convergence_command.h"
 #include "app/mpi_session.h"
+#include "app/pattern_command.h"
 #include "app/run_command.h"
 #include "cases/case_parameters.h"
 #include "core/interruption.h"
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
     if (interruption_signal() != 0) return 128 + interruption_signal();
     if (cl.command == "run" || cl.command == "compare" || cl.command == "convergence")
       return status;
+    if (cl.command == "pattern") return pattern_command(cl, out);
     std::cerr << "tightfit: '" << cl.command << "' is not available yet\n";
     return 2;
   } catch (const UsageError& e) {

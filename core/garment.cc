@@ -64,7 +64,7 @@ SimulationMesh weld(const Garment& garment) {
                                   " and " + std::to_string(b.size()) + " vertices");
     for (std::size_t i = 0; i < a.size(); ++i)
       sewn.join(mesh.panel_vertex_offset[seam.panel_a] + a[i],
-                mesh.panel_vertex_offset[seam.panel_b] + b[i]);
+                mesh.panel_vertex_offset[seam.panel_b] + b[seam.reversed ? b.size() - 1 - i : i]);
   }
 
   // Number the welded vertices in the order their first panel vertex appears.

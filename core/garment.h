@@ -32,12 +32,14 @@ struct Panel {
 };
 
 // Sews edge `edge_a` of panel `panel_a` to edge `edge_b` of panel `panel_b`, vertex by vertex
-// in the order the edges list them (the edges must have equal vertex counts).
+// in the order the edges list them, or with edge_b's list walked backwards when `reversed`
+// (the edges must have equal vertex counts).
 struct Seam {
   int panel_a = 0;
   std::string edge_a;
   int panel_b = 0;
   std::string edge_b;
+  bool reversed = false;
 };
 
 struct Garment {

@@ -20,6 +20,20 @@ Garment make_tube_garment(const std::string& name, double panel_width_m, double 
   return garment;
 }
 
+namespace {
+
+// x of the vertex of edge `edge` with the smallest y (0 when the panel has no such edge).
+double lowest_x(const Panel& panel, const std::string& edge) {
+  const auto found = panel.edges.find(edge);
+  if (found == panel.edges.end() || found->second.empty()) return 0.0;
+  const auto& rest = panel.rest_positions_m;
+  const int lowest = *std::min_element(found->second.begin(), found->second.end(),
+                                       [&](int a, int b) { return rest[a].y() < rest[b].y(); });
+  return rest[lowest].x();
+}
+
+}  // namespace
+
 double ring_circumference_m(const Garment& garment) {
   const int n = static_cast<int>(garment.panels.size());
   if (n == 0 || static_cast<int>(garment.seams.size()) != n) return 0.0;
@@ -34,15 +48,10 @@ double ring_circumference_m(const Garment& garment) {
   double circumference = 0.0;
   for (int visited = 0; visited < n; ++visited) {
     if (panel < 0 || panel >= n || (visited > 0 && panel == 0)) return 0.0;
-    double x_min = 0.0, x_max = 0.0;
-    const auto& rest = garment.panels[panel].rest_positions_m;
-    if (!rest.empty()) {
-      const auto [lo, hi] = std::minmax_element(
-          rest.begin(), rest.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x(); });
-      x_min = lo->x();
-      x_max = hi->x();
-    }
-    circumference += x_max - x_min;
+    // The panel's width round the ring: from its left edge to its right edge along x, at the
+    // lowest vertex of each (a rectangle's full width; also right for side edges curved alike).
+    circumference +=
+        lowest_x(garment.panels[panel], "right") - lowest_x(garment.panels[panel], "left");
     panel = next[panel];
   }
   return panel == 0 ? circumference : 0.0;

@@ -16,8 +16,9 @@ Garment make_tube_garment(const std::string& name, double panel_width_m, double 
                           int n_panels, const MeshSpacing& spacing);
 
 // Circumference of a garment whose panels are sewn right edge to the next one's left edge
-// round a closed ring (a tube such as make_tube_garment's): the sum of the panels' widths,
-// metres. Zero for any other garment.
+// round a closed ring (a tube such as make_tube_garment's): the sum of the panels' widths
+// (x from the lowest vertex of the left edge to the lowest of the right), metres. Zero for
+// any other garment.
 double ring_circumference_m(const Garment& garment);
 
 }  // namespace tightfit

@@ -123,4 +123,14 @@ void BendingHinges::add_stiffness_bounds(const std::vector<Vec3>& x,
   }
 }
 
+void BendingHinges::add_stiffness(const std::vector<Vec3>& x, Triplets& triplets) const {
+  for (const Hinge& h : hinges_) {
+    const AngleGradient ag = angle_and_gradient(x[h.a], x[h.b], x[h.c], x[h.d]);
+    const int v[4] = {h.a, h.b, h.c, h.d};
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        add_block(triplets, v[i], v[j], h.stiffness_N_m * ag.grad[i] * ag.grad[j].transpose());
+  }
+}
+
 }  // namespace tightfit

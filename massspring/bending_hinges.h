@@ -14,6 +14,7 @@
 #pragma once
 
 #include "core/garment.h"
+#include "massspring/sparse_blocks.h"
 
 #include <vector>
 
@@ -32,6 +33,12 @@ class BendingHinges {
   // Adds an upper bound of each vertex's bending stiffness (N/m) in the current state.
   void add_stiffness_bounds(const std::vector<Vec3>& positions_m,
                             std::vector<double>& stiffness_N_per_m) const;
+
+  // Appends the Gauss-Newton stiffness of every hinge, k grad(theta) grad(theta)^T (N/m), to
+  // `triplets`: the Hessian of E_e without its k theta Hess(theta) term, which vanishes where
+  // the wings are flat and stays small (theta of order h / radius) on a garment; it keeps the
+  // matrix positive semi-definite for the Cholesky factorisation.
+  void add_stiffness(const std::vector<Vec3>& positions_m, Triplets& triplets) const;
 
   std::size_t size() const { return hinges_.size(); }
 

@@ -1,10 +1,12 @@
 #include "massspring/massspring_backend.h"
 #include "core/interruption.h"
 
+#include "contact/nodal_contact.h"
 #include "contact/penalty_contact.h"
 #include "contact/rigid_body.h"
 #include "massspring/flat_panel_start.h"
 #include "massspring/lumped_mass.h"
+#include "massspring/residual_history.h"
 #include "massspring/stable_time_step.h"
 
 #include <algorithm>
@@ -107,6 +109,41 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
                                       : std::numeric_limits<double>::quiet_NaN();
 }
 
+void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) const {
+  const int n = static_cast<int>(x.size());
+  Triplets triplets;
+  triplets.reserve(9 * (9 * elements_.size() + 16 * hinges_.size() + x.size()));
+  elements_.add_stiffness(x, triplets);
+  hinges_.add_stiffness(x, triplets);
+  const RigidBody* body = problem_.body;
+  const double k = problem_.contact_stiffness_Pa_per_m;
+  for (int i = 0; i < n; ++i) {
+    // Every vertex gets its diagonal block, in contact or not, so the pattern stays the same.
+    Mat3 block = Mat3::Zero();
+    if (body && k > 0)
+      block = nodal_contact(*body, x[i], multiplier_N_[i], k * rest_vertex_area_m2_[i], true)
+                  .stiffness_N_per_m;
+    add_block(triplets, i, i, block);
+  }
+  K.resize(3 * n, 3 * n);
+  K.setFromTriplets(triplets.begin(), triplets.end());
+  if (constrained_.size() == 0) return;
+  // Held directions: K -> P K P + (I - P), P removing them at each held vertex, so an
+  // increment has no component along them (the residual has none either).
+  Triplets projection, held;
+  for (int i = 0; i < n; ++i) {
+    Mat3 P = Mat3::Identity();
+    if (constrained_.constrained(i))
+      for (const Vec3& d : constrained_.directions(i)) P -= d * d.transpose();
+    add_block(projection, i, i, P);
+    if (constrained_.constrained(i)) add_block(held, i, i, Mat3::Identity() - P);
+  }
+  SparseMatrix P(3 * n, 3 * n), H(3 * n, 3 * n);
+  P.setFromTriplets(projection.begin(), projection.end());
+  H.setFromTriplets(held.begin(), held.end());
+  K = SparseMatrix(P * K * P) + H;
+}
+
 double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double stop_below_N) {
   const double residual = integrator_.frame(
       x_, v_, mass_kg_, dt, c,
@@ -175,19 +212,47 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   const double runaway_m = 10.0 * size_m_;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
 
-  auto fail = [&](const std::string& what, int frame, double residual) {
+  ResidualHistory history(parameters_.stall_window_frames, parameters_.stall_fall);
+  // The residual history follows the message on the lines below it.
+  auto fail = [&](const std::string& what, int frame, double residual, bool with_history) {
     std::ostringstream message;
     message << "mass spring: " << step_name(step) << " " << what << " at frame " << frame
             << " (residual " << residual << " N, tolerance " << tolerance_N_ << " N, time step "
             << time_step_s_ << " s)";
+    if (with_history) message << "; " << history.text();
     return SolverError(message.str());
   };
 
-  int frame = 0;
+  int frame = 0, halvings = 0;
   double residual = 0.0;
   // Damped RK4 from the current state until the stop rule holds; `frame` counts on over the
-  // settles of one step (the frame limit is the step's).
+  // settles of one step (the frame limit is the step's). A stalled window halves the time
+  // step (residual_history.h) until the halvings run out.
+  const bool implicit = parameters_.integrator == Integrator::implicit;
+  std::string newton_history;
+  // The implicit route: Newton from the current state to the same stop rule; `frame` counts
+  // its factorisations.
+  auto settle_implicit = [&]() {
+    const StaticNewton::Result r = newton_.solve(
+        x_, mass_kg_,
+        [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
+          return residual_forces(x, step.gravity_on, force);
+        },
+        [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, tolerance_N_,
+        1.0 / damping_per_s_, parameters_.maximum_newton_iterations - frame);
+    frame += r.iterations;
+    residual = r.residual_N;
+    newton_history += (newton_history.empty() ? "" : "; ") + r.history;
+    if (r.converged) return;
+    std::ostringstream what;
+    what << "did not reach equilibrium (implicit integrator, " << frame
+         << " Newton iterations, Mass spring/Maximum Newton iterations "
+         << parameters_.maximum_newton_iterations << "); " << newton_history;
+    throw fail(what.str(), frame, residual, false);
+  };
   auto settle = [&]() {
+    if (implicit) return settle_implicit();
+    history.restart();
     for (;;) {
       // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
       const bool quasi_static = frame < parameters_.quasi_static_frames;
@@ -196,19 +261,32 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
                            tolerance_N_);
       if (!std::isfinite(residual))
         throw fail("diverged (non-finite force; try a smaller Mass spring/Time step)", frame,
-                   residual);
+                   residual, false);
       if (residual < tolerance_N_) return;  // rk4_frame left the stable state untouched
+      if (history.record(frame, residual, time_step_s_)) {
+        if (halvings == parameters_.stall_halvings)
+          throw fail(
+              "stalled (the residual did not fall below Mass spring/Stall residual fall "
+              "times its earlier windows' after " +
+                  std::to_string(halvings) + " time step halvings)",
+              frame, residual, true);
+        time_step_s_ *= 0.5;
+        ++halvings;
+        history.restart();
+      }
       ++frame;
       throw_if_interrupted(interruption_signal(),
                            "during " + step_name(step) + " at frame " + std::to_string(frame));
       if (frame % 64 == 0)
         for (std::size_t i = 0; i < x_.size(); ++i)
           if (!((x_[i] - start_x[i]).norm() < runaway_m))
-            throw fail("diverged (vertex " + std::to_string(i) + " ran away)", frame, residual);
+            throw fail("diverged (vertex " + std::to_string(i) + " ran away)", frame, residual,
+                       false);
       if (frame >= parameters_.maximum_frames) {
         residual = residual_forces(x_, step.gravity_on, force_);
         if (residual < tolerance_N_) return;
-        throw fail("did not reach equilibrium within Mass spring/Maximum frames", frame, residual);
+        throw fail("did not reach equilibrium within Mass spring/Maximum frames", frame, residual,
+                   true);
       }
     }
   };
@@ -231,7 +309,7 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
       what << "kept a penetration of " << penetration_m << " m (Mass spring/Gap tolerance "
            << parameters_.gap_tolerance_m << " m) after " << updates
            << " contact multiplier updates";
-      throw fail(what.str(), frame, residual);
+      throw fail(what.str(), frame, residual, false);
     }
     ++updates;
   }
@@ -244,12 +322,19 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream detail;
-  detail << "mass spring: " << step_name(step) << " " << flat_start_detail << "stable after "
-         << frame << " frames (" << std::min(frame, parameters_.quasi_static_frames)
-         << " quasi-static, " << updates << " contact multiplier updates), dt " << time_step_s_
-         << " s, damping " << damping_per_s_ << " 1/s, residual " << residual << " N < "
-         << tolerance_N_ << " N, largest penetration " << penetration_m << " m, "
+  detail << "mass spring: " << step_name(step) << " " << flat_start_detail << "stable after ";
+  if (implicit)
+    detail << frame << " Newton iterations (implicit, " << updates
+           << " contact multiplier updates), first pseudo time step " << 1.0 / damping_per_s_
+           << " s, residual " << residual << " N < ";
+  else
+    detail << frame << " frames (" << std::min(frame, parameters_.quasi_static_frames)
+           << " quasi-static, " << updates << " contact multiplier updates, " << halvings
+           << " time step halvings), dt " << time_step_s_ << " s, damping " << damping_per_s_
+           << " 1/s, residual " << residual << " N < ";
+  detail << tolerance_N_ << " N, largest penetration " << penetration_m << " m, "
          << report.wall_seconds << " s";
+  if (halvings > 0) detail << "; " << history.text();
   report.detail = detail.str();
   return report;
 }

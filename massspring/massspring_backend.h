@@ -19,6 +19,7 @@
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
+#include "massspring/static_newton.h"
 #include "massspring/triangle_elements.h"
 
 #include <memory>
@@ -50,11 +51,16 @@ class MassSpringBackend final : public Backend {
   double time_step_s() const { return time_step_s_; }
   double damping_per_s() const { return damping_per_s_; }
 
- private:
   // Residual force on every particle (internal + contact + gravity when on, held components
-  // removed) into `force`; returns the largest magnitude, N.
+  // removed) into `force`; returns the largest magnitude, N (NaN when one is not finite).
   double residual_forces(const std::vector<Vec3>& x, bool gravity_on,
                          std::vector<Vec3>& force) const;
+  // The residual's stiffness K = -d(residual)/dx at `x` (N/m, 3n x 3n, symmetric): the
+  // triangles' exact stiffness, the hinges' Gauss-Newton one, each contact's and, at a held
+  // vertex, the held directions projected out (and a unit diagonal put in their place).
+  void stiffness(const std::vector<Vec3>& x, SparseMatrix& K) const;
+
+ private:
   // Internal (membrane + bending) force on every particle into `force`, N.
   void internal_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const;
   // One RK4 frame of x' = v, v' = f(x)/m - c v from (x_, v_). Returns the residual force at
@@ -86,6 +92,7 @@ class MassSpringBackend final : public Backend {
   // Contact multiplier estimate of each particle, N (all zero: the plain penalty).
   std::vector<double> multiplier_N_;
   DampedRk4 integrator_;
+  StaticNewton newton_;
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
 };

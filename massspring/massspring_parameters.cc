@@ -22,6 +22,20 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Selection;
   const MassSpringParameters d;
   prm.enter_subsection("Mass spring");
+  prm.declare_entry("Integrator", "rk4", Selection("rk4|implicit"),
+                    "How each load step reaches its stable state. 'rk4': the paper's damped "
+                    "fourth-order Runge-Kutta frames (Time step, Damping, Quasi-static frames, "
+                    "the stall test). 'implicit': a regularised Newton iteration on the static "
+                    "equilibrium with the same forces and their analytic stiffness, each step a "
+                    "sparse Cholesky solve (CHOLMOD) of (K + M / tau^2) dx = f with a pseudo "
+                    "time step tau that grows tenfold after every full step; the same stop rule "
+                    "and contact multiplier updates, so the same equilibrium within the stop "
+                    "rule, in far less time on fine meshes (docs/performance.md).");
+  prm.declare_entry("Maximum Newton iterations", text(d.maximum_newton_iterations),
+                    Integer(1, 100000000),
+                    "Implicit integrator: guard against non-convergence, factorisations per "
+                    "load step; a step that needs more fails with an error quoting the "
+                    "iteration history.");
   prm.declare_entry("Time step", text(d.time_step_s), Double(0.0, 1.0),
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
                     "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
@@ -47,6 +61,18 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Maximum frames", text(d.maximum_frames), Integer(1, 2000000000),
                     "Guard against non-convergence, frames: a load step that has not met the "
                     "stop rule by then fails with an error naming the step and residual.");
+  prm.declare_entry("Stall window", text(d.stall_window_frames), Integer(1, 2000000000),
+                    "Stall test, frames: the residual is watched in windows of this many frames; "
+                    "a window whose smallest residual is not below Stall residual fall times the "
+                    "smallest of the earlier windows of the same settle has stalled (a limit "
+                    "cycle or a floor above the stop rule). The time step is then halved.");
+  prm.declare_entry("Stall residual fall", text(d.stall_fall), Double(1e-6, 0.999999),
+                    "Stall test, dimensionless: the factor by which each window's smallest "
+                    "residual must fall below the earlier windows'.");
+  prm.declare_entry("Stall time step halvings", text(d.stall_halvings), Integer(0, 30),
+                    "Stall test, count: time-step halvings allowed per load step; a stall after "
+                    "the last ends the step with an error quoting the residual history (also in "
+                    "solver.log).");
   prm.declare_entry("Contact multiplier updates", text(d.contact_updates), Integer(0, 1000),
                     "Augmented-Lagrangian (Uzawa) updates per load step, count: after each stable "
                     "state every vertex's contact multiplier becomes its contact force and the "
@@ -84,12 +110,17 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
 
 void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   prm.enter_subsection("Mass spring");
+  integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
+  maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
   damping_per_s = prm.get_double("Damping");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
   relative_tolerance = prm.get_double("Relative tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
+  stall_window_frames = prm.get_integer("Stall window");
+  stall_fall = prm.get_double("Stall residual fall");
+  stall_halvings = prm.get_integer("Stall time step halvings");
   contact_updates = prm.get_integer("Contact multiplier updates");
   gap_tolerance_m = prm.get_double("Gap tolerance");
   bending_rigidity_N_m = prm.get_double("Bending rigidity");

@@ -20,7 +20,20 @@ enum class Placement {
   flat_panels,
 };
 
+// How a load step reaches its stable state.
+enum class Integrator {
+  // The paper's: damped fourth-order Runge-Kutta frames until the stop rule holds.
+  rk4,
+  // A regularised Newton iteration on the static equilibrium (static_newton.h): the same
+  // forces, stop rule and contact multiplier updates, far fewer and costlier iterations.
+  implicit,
+};
+
 struct MassSpringParameters {
+  // The road to each stable state; the equilibrium, within the stop rule, is the same.
+  Integrator integrator = Integrator::rk4;
+  // Implicit: guard against non-convergence, factorisations per load step.
+  int maximum_newton_iterations = 500;
   // RK4 time step, s; 0 chooses it from the stiffest vertex (membrane, bending and penalty
   // contact) at the start of every load step.
   double time_step_s = 0.0;
@@ -39,6 +52,12 @@ struct MassSpringParameters {
   // Guard against non-convergence: a load step that has not met the stop rule after this
   // many frames fails with an error.
   int maximum_frames = 200000;
+  // Stall test (residual_history.h): a window of this many frames whose smallest residual is
+  // not below stall_fall times the smallest of the earlier windows has stalled; the time step
+  // is halved, up to stall_halvings times, and a stall after that ends the step with an error.
+  int stall_window_frames = 2000;
+  double stall_fall = 0.9;
+  int stall_halvings = 2;
   // Contact multiplier updates (Uzawa) per load step: after each stable state every vertex's
   // multiplier becomes its contact force and the garment settles again, until the largest
   // penetration is below gap_tolerance_m. 0 = the plain penalty (vertices sit p / k inside).

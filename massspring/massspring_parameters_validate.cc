@@ -18,6 +18,10 @@ void MassSpringParameters::validate() const {
   require(relative_tolerance > 0 && relative_tolerance < 1, "Relative tolerance",
           "must be in (0, 1)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
+  require(maximum_newton_iterations > 0, "Maximum Newton iterations", "must be positive");
+  require(stall_window_frames > 0, "Stall window", "must be positive (frames)");
+  require(stall_fall > 0 && stall_fall < 1, "Stall residual fall", "must be in (0, 1)");
+  require(stall_halvings >= 0, "Stall time step halvings", "must be >= 0");
   require(contact_updates >= 0, "Contact multiplier updates", "must be >= 0 (0 = plain penalty)");
   require(gap_tolerance_m > 0, "Gap tolerance", "must be positive (m)");
   require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");

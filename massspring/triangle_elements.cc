@@ -69,3 +69,31 @@ void TriangleElements::add_stiffness_bounds(const std::vector<Vec3>& x,
 }
 
 }  // namespace tightfit
+
+namespace tightfit {
+
+void TriangleElements::add_stiffness(const std::vector<Vec3>& x, Triplets& triplets) const {
+  for (const Element& e : elements_) {
+    const Mat32 F = deformation_gradient(e, x);
+    const Mat2 C = F.transpose() * F;
+    const Mat3 D = law_.tangent(C);
+    const Mat2 S = law_.stress(C);
+    // B_j: d[E11, E22, 2 E12] / dx_j, E = (F^T F - I) / 2 and dF = dx_j g_j^T.
+    std::array<Mat3, 3> B;
+    for (int j = 0; j < 3; ++j) {
+      const Vec2& g = e.gradient[j];
+      B[j].row(0) = g.x() * F.col(0).transpose();
+      B[j].row(1) = g.y() * F.col(1).transpose();
+      B[j].row(2) = g.y() * F.col(0).transpose() + g.x() * F.col(1).transpose();
+    }
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const double geometric = e.gradient[i].dot(S * e.gradient[j]);
+        const Mat3 block =
+            e.rest_area_m2 * (B[i].transpose() * D * B[j] + geometric * Mat3::Identity());
+        add_block(triplets, e.vertex[i], e.vertex[j], block);
+      }
+  }
+}
+
+}  // namespace tightfit

@@ -11,6 +11,7 @@
 
 #include "core/garment.h"
 #include "core/material.h"
+#include "massspring/sparse_blocks.h"
 
 #include <vector>
 
@@ -31,6 +32,12 @@ class TriangleElements {
   // the law's tangent and the geometric (stress) term. Added to stiffness_N_per_m.
   void add_stiffness_bounds(const std::vector<Vec3>& positions_m,
                             std::vector<double>& stiffness_N_per_m) const;
+
+  // Appends the exact stiffness K = -df/dx (N/m) of every triangle, its nine 3x3 vertex blocks
+  // K_ij = A0 [B_i^T D B_j + (g_i . S g_j) I] (D the law's tangent, S its stress, B_j the
+  // strain's derivative by x_j in Voigt order: rows g_j1 F1^T, g_j2 F2^T, g_j2 F1^T + g_j1 F2^T
+  // with F1, F2 the columns of F), to `triplets`.
+  void add_stiffness(const std::vector<Vec3>& positions_m, Triplets& triplets) const;
 
   std::size_t size() const { return elements_.size(); }
 

@@ -8,6 +8,7 @@ packages=(
   cmake make g++                 # build tools
   libdeal.ii-dev openmpi-bin     # deal.II 9.4 with PETSc, MPI and p4est; mpirun
   libeigen3-dev libvtk9-dev      # small dense algebra; VTU output, mesh readers, rendering
+  libsuitesparse-dev             # CHOLMOD: the mass-spring backend's implicit integrator
   libcgal-dev                    # AABB trees, 2D constrained Delaunay meshing
   libpugixml-dev nlohmann-json3-dev libdxflib-dev  # SVG, JSON and DXF pattern files
   libgtest-dev libbenchmark-dev  # tests and benchmarks

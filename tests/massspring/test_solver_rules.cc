@@ -180,6 +180,31 @@ TEST(MassSpringSolver, ContactThatDoesNotCloseThrowsNamingTheStepAndPenetration)
   EXPECT_NE(message.find("1 contact multiplier updates"), std::string::npos) << message;
 }
 
+TEST(MassSpringSolver, StallEndsTheStepEarlyWithTheResidualHistory) {
+  // A stop rule below round-off (1.4e-17 N): the residual falls to its floor (measured 7e-14
+  // N from frame 2400 on) and stays there. The stall test halves the time step once, stalls
+  // again and stops the step (measured at frame 3199) long before Maximum frames, quoting the
+  // windows.
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  MassSpringParameters parameters;
+  parameters.relative_tolerance = 1e-16;
+  parameters.contact_updates = 0;
+  parameters.stall_window_frames = 200;
+  parameters.stall_halvings = 1;
+  MassSpringBackend backend(tube.problem, parameters);
+  backend.set_positions(tube.start_positions());
+  const std::string message = solver_error_message(backend, LoadStep{3, 1.3, false});
+  EXPECT_NE(message.find("load step 3"), std::string::npos) << message;
+  EXPECT_NE(message.find("stalled"), std::string::npos) << message;
+  EXPECT_NE(message.find("after 1 time step halvings"), std::string::npos) << message;
+  EXPECT_NE(message.find("residual history"), std::string::npos) << message;
+  // The frame it stopped at, far below the default Maximum frames (200000).
+  const std::size_t at = message.find(" at frame ");
+  ASSERT_NE(at, std::string::npos) << message;
+  EXPECT_LT(std::stoi(message.substr(at + 10)), 20000) << message;
+}
+
 TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
   tube.cylinder.set_radius(1.5 * tube.rest_radius_m());

@@ -1,0 +1,100 @@
+#include "massspring/static_newton.h"
+
+#include <Eigen/CholmodSupport>
+
+#include <cmath>
+#include <sstream>
+
+namespace tightfit {
+
+// CHOLMOD's supernodal LL^T; its symbolic analysis is kept while the pattern stays the same.
+struct StaticNewton::Factorisation {
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
+  Eigen::Index analysed_nonzeros = -1, analysed_size = -1;
+};
+
+StaticNewton::StaticNewton() : factorisation_(std::make_unique<Factorisation>()) {
+  // A matrix that is not positive definite is expected (the pseudo time step then shrinks):
+  // no warning on the console.
+  factorisation_->llt.cholmod().print = 0;
+}
+StaticNewton::~StaticNewton() = default;
+
+namespace {
+
+double norm2(const std::vector<Vec3>& f) {
+  double sum = 0.0;
+  for (const Vec3& v : f) sum += v.squaredNorm();
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector<double>& mass_kg,
+                                         const Forces& forces, const Stiffness& stiffness,
+                                         double tolerance_N, double initial_tau_s,
+                                         int maximum_iterations) {
+  const std::size_t n = x.size();
+  // tau between these bounds: the longest makes M / tau^2 negligible against any stiffness
+  // (Newton's own step), the shortest a step of explicit size.
+  const double longest_tau_s = 1e8 * initial_tau_s, shortest_tau_s = 1e-8 * initial_tau_s;
+  Result result;
+  std::ostringstream history;
+  history << "Newton (iteration: largest residual N, pseudo time step s, step length)";
+  std::vector<Vec3> force(n), trial_x(n), trial_force(n);
+  double largest = forces(x, force);
+  double norm = norm2(force);
+  double tau = initial_tau_s;
+  SparseMatrix K;
+  Eigen::VectorXd rhs(3 * n), dx(3 * n);
+  Factorisation& f = *factorisation_;
+  while (std::isfinite(largest) && largest >= tolerance_N &&
+         result.iterations < maximum_iterations) {
+    ++result.iterations;
+    stiffness(x, K);
+    for (std::size_t v = 0; v < n; ++v) {
+      const double regularisation = mass_kg[v] / (tau * tau);
+      for (int k = 0; k < 3; ++k) K.coeffRef(3 * v + k, 3 * v + k) += regularisation;
+      rhs.segment<3>(3 * v) = force[v];
+    }
+    if (K.nonZeros() != f.analysed_nonzeros || K.rows() != f.analysed_size) {
+      f.llt.analyzePattern(K);
+      f.analysed_nonzeros = K.nonZeros();
+      f.analysed_size = K.rows();
+    }
+    f.llt.factorize(K);
+    bool accepted = false;
+    double length = 1.0;
+    if (f.llt.info() == Eigen::Success) {
+      dx = f.llt.solve(rhs);
+      // Backtracking on the residual's norm.
+      for (int halving = 0; halving < 6 && !accepted; ++halving, length *= 0.5) {
+        for (std::size_t v = 0; v < n; ++v) trial_x[v] = x[v] + length * dx.segment<3>(3 * v);
+        const double trial_largest = forces(trial_x, trial_force);
+        const double trial_norm = norm2(trial_force);
+        if (std::isfinite(trial_largest) && trial_norm < norm) {
+          accepted = true;
+          x.swap(trial_x);
+          force.swap(trial_force);
+          largest = trial_largest;
+          norm = trial_norm;
+        }
+      }
+      if (accepted) length *= 2.0;  // undo the loop's last halving
+    }
+    history << "\n  " << result.iterations << ": " << largest << "  " << tau << "  "
+            << (accepted ? length : 0.0);
+    if (accepted && length == 1.0)
+      tau = std::min(10.0 * tau, longest_tau_s);
+    else if (!accepted) {
+      if (tau <= shortest_tau_s) break;
+      tau = std::max(0.1 * tau, shortest_tau_s);
+    }
+  }
+  result.residual_N = largest;
+  result.converged = std::isfinite(largest) && largest < tolerance_N;
+  result.history = history.str();
+  return result;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,125 @@
+#include "pattern/polygon_mesher.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace tightfit::pattern {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Triangulation_vertex_base_2<Kernel>;
+using FaceBase = CGAL::Delaunay_mesh_face_base_2<Kernel>;
+using Structure = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Structure>;
+using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+using Point = Cdt::Point;
+
+Vec2 to_vec(const Point& p) {
+  return Vec2(p.x(), p.y());
+}
+
+// Where point x lies on the outline's chords: the nearest chord and the fraction along it.
+PolygonMesh::BoundaryPoint on_outline(const std::vector<Vec2>& outline, const Vec2& x) {
+  PolygonMesh::BoundaryPoint best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  const int n = static_cast<int>(outline.size());
+  for (int k = 0; k < n; ++k) {
+    const Vec2 a = outline[k], d = outline[(k + 1) % n] - a;
+    const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    const double distance = (a + t * d - x).norm();
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = {k, t};
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+PolygonMesh mesh_polygon(const std::vector<Vec2>& outline_m, double edge_length_m,
+                         double min_angle_deg) {
+  if (outline_m.size() < 3) throw std::invalid_argument("an outline needs three points");
+  if (!(edge_length_m > 0)) throw std::invalid_argument("the mesh edge length must be positive");
+  if (!(min_angle_deg > 0) || min_angle_deg > 33)
+    throw std::invalid_argument("the minimum angle must be in (0, 33] degrees");
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> outline_vertex;
+  for (const Vec2& x : outline_m) outline_vertex.push_back(cdt.insert(Point(x.x(), x.y())));
+  const std::size_t n = outline_m.size();
+  for (std::size_t k = 0; k < n; ++k)
+    cdt.insert_constraint(outline_vertex[k], outline_vertex[(k + 1) % n]);
+  if (cdt.number_of_vertices() != n)
+    throw std::invalid_argument("the outline passes twice through one point");
+
+  // CGAL's shape bound is sin^2 of the smallest angle; its size bound the longest edge.
+  const double sine = std::sin(min_angle_deg * M_PI / 180.0);
+  CGAL::refine_Delaunay_mesh_2(cdt, Criteria(sine * sine, edge_length_m));
+
+  PolygonMesh mesh;
+  mesh.points_m = outline_m;
+  std::map<Cdt::Vertex_handle, int> index;
+  for (std::size_t k = 0; k < n; ++k) index[outline_vertex[k]] = static_cast<int>(k);
+  auto index_of = [&](Cdt::Vertex_handle v) {
+    const auto found = index.find(v);
+    if (found != index.end()) return found->second;
+    const int i = static_cast<int>(mesh.points_m.size());
+    mesh.points_m.push_back(to_vec(v->point()));
+    index.emplace(v, i);
+    return i;
+  };
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_in_domain()) continue;
+    mesh.triangles.push_back(
+        {index_of(f->vertex(0)), index_of(f->vertex(1)), index_of(f->vertex(2))});
+  }
+  // Points added on a constrained edge lie on the outline.
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+    if (!cdt.is_constrained(*e)) continue;
+    for (int end : {1, 2}) {
+      const Cdt::Vertex_handle v = e->first->vertex((e->second + end) % 3);
+      const int i = index.at(v);
+      if (i < static_cast<int>(n)) continue;
+      const auto point = on_outline(outline_m, mesh.points_m[i]);
+      bool known = false;
+      for (const auto& p : mesh.added_on_outline)
+        known = known || (p.chord == point.chord && std::abs(p.along - point.along) < 1e-12);
+      if (!known) mesh.added_on_outline.push_back(point);
+    }
+  }
+  if (mesh.triangles.empty()) throw std::invalid_argument("the outline encloses no area");
+  return mesh;
+}
+
+MeshQuality mesh_quality(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles) {
+  MeshQuality q;
+  q.min_angle_deg = 180.0;
+  q.min_edge_m = std::numeric_limits<double>::infinity();
+  double sum = 0.0;
+  int count = 0;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 a = points[t[k]], b = points[t[(k + 1) % 3]], c = points[t[(k + 2) % 3]];
+      const double length = (b - a).norm();
+      q.min_edge_m = std::min(q.min_edge_m, length);
+      q.max_edge_m = std::max(q.max_edge_m, length);
+      sum += length;
+      ++count;
+      const Vec2 u = b - a, v = c - a;
+      const double angle = std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+      q.min_angle_deg = std::min(q.min_angle_deg, angle * 180.0 / M_PI);
+    }
+  q.mean_edge_m = count > 0 ? sum / count : 0.0;
+  return q;
+}
+
+}  // namespace tightfit::pattern
