@@ -28,6 +28,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
     CaseParameters parameters = files.back()->parameters();
     parameters.output.rank = cl.rank;
     parameters.output.n_ranks = cl.n_ranks;
+    parameters.output.end_every_rank = cl.end_every_rank;
     setups.push_back(make_scenario(parameters));
   }
 
@@ -54,6 +55,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
       status = 1;
     }
     out << "\n";
+    if (result.interrupted_by != 0) break;  // main returns 128 + the signal
   }
   return status;
 }

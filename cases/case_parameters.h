@@ -94,6 +94,11 @@ struct OutputSettings {
   int rank = 0;
   int n_ranks = 1;
   bool is_first_rank() const { return rank == 0; }
+  // With several ranks: reports an error that reached this rank alone (its piece of the
+  // output cannot be written) and ends every rank, before unwinding this rank's solver
+  // objects, whose destructors would wait for the others (MPI_Abort). Unset: the error is
+  // thrown as usual.
+  std::function<void(const std::string&)> end_every_rank;
 };
 
 struct CaseParameters {

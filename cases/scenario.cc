@@ -3,6 +3,7 @@
 #include "cases/load_steps.h"
 #include "contact/penalty_contact.h"
 #include "core/constrained_directions.h"
+#include "core/memory_budget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,6 +85,11 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   Scenario& s = *scenario;
   s.parameters = parameters;
   s.garment = parameters.garment.make(parameters.garment.name, parameters.garment.spacing);
+  // Each panel was checked as it was meshed; the run holds them all.
+  double n_vertices = 0;
+  for (const Panel& panel : s.garment.panels) n_vertices += panel.rest_positions_m.size();
+  require_memory("garment '" + s.garment.name + "': a run", n_vertices, "vertices",
+                 run_bytes_per_garment_vertex);
   s.mesh = weld(s.garment);
   s.law = make_material_law(parameters.law, parameters.fabric);
   s.mean_edge_length_m = mean_rest_edge_length_m(s.mesh);

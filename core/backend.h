@@ -53,8 +53,9 @@ struct LoadStep {
   bool gravity_on = false;
 };
 
+// What solve() reports of a step it finished: it returns only at equilibrium (residual below
+// the stop rule's threshold) and throws SolverError otherwise.
 struct StepReport {
-  bool converged = false;
   int iterations = 0;        // frames (mass-spring) or Newton steps (FE)
   double residual_N = 0.0;   // largest residual force on a free vertex at the end
   double tolerance_N = 0.0;  // the stop rule's threshold

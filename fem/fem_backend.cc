@@ -107,7 +107,6 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
   output_ = surface_output(pattern_, assembly_, *problem_.body, x_, contact_.nodes().multiplier_N);
 
-  report.converged = true;
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.rounds.size()
          << " AL rounds, |R|_max N: ";
@@ -153,6 +152,10 @@ std::vector<std::pair<std::string, std::vector<double>>> FemBackend::extra_point
 
 std::vector<double> FemBackend::contact_traction_Pa() const {
   return impl_->output_.contact_traction_Pa;
+}
+
+const std::vector<double>& FemBackend::nodal_contact_force_N() const {
+  return impl_->contact_.nodes().multiplier_N;
 }
 
 double FemBackend::max_penetration_m() const {

@@ -1,4 +1,5 @@
 #include "massspring/massspring_backend.h"
+#include "core/interruption.h"
 
 #include "contact/nodal_contact.h"
 #include "contact/penalty_contact.h"
@@ -48,7 +49,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   rest_vertex_area_m2_ = rest_vertex_areas_m2(mesh);
   constrained_ = ConstrainedDirections(problem_.constraints, n);
   size_m_ = std::sqrt(rest_area(mesh));
-  // Stop rule (architecture.md): a force relative to the tension scale, Y h^2 / L (h the mean
+  // Stop rule: a force relative to the tension scale, Y h^2 / L (h the mean
   // rest edge, L = size_m_). A smooth error of strain amplitude e over the garment leaves about
   // Y e h^2 / L on each vertex (the stress error's gradient Y e / L times the vertex area h^2),
   // so this bounds the remaining strain error by about the relative tolerance on every mesh.
@@ -333,6 +334,8 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
         history.restart();
       }
       ++frame;
+      throw_if_interrupted(interruption_signal(),
+                           "during " + step_name(step) + " at frame " + std::to_string(frame));
       if (frame % 64 == 0)
         for (std::size_t i = 0; i < x_.size(); ++i)
           if (!((x_[i] - start_x[i]).norm() < runaway_m))
@@ -381,7 +384,6 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   const int slipping = commit_friction_anchors();
 
   StepReport report;
-  report.converged = true;
   report.iterations = flat_start_frames + frame;
   report.residual_N = residual;
   report.tolerance_N = tolerance_N_;
