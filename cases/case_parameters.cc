@@ -201,6 +201,17 @@ void declare_contact(ParameterHandler& prm) {
                     "away, so beta sets only their speed and the time step; with Mass "
                     "spring/Contact multiplier updates = 0 the penetration stays and "
                     "docs/model.md gives its effect on the pressure.");
+  prm.declare_entry("Friction coefficient", "0", Patterns::Double(0),
+                    "Coulomb friction coefficient mu between garment and body (-); 0 = "
+                    "frictionless (the paper's cylinder). Quasi-static and path dependent: each "
+                    "vertex sticks to an anchor on the body's own surface (carried as the body "
+                    "grows or morphs) until its tangential force reaches mu times its normal "
+                    "force, then slips (docs/model.md, \"Friction\").");
+  prm.declare_entry("Tangential penalty ratio", "1", Patterns::Double(1e-3),
+                    "The friction's regularisation (-): a sticking vertex is held to its anchor "
+                    "by a spring of this times the normal penalty k A0, so it creeps |f| / k_t. "
+                    "Larger is closer to exact sticking and, on the mass-spring backend, a "
+                    "smaller time step; the results do not depend on it (docs/model.md).");
   prm.leave_subsection();
 }
 
@@ -245,6 +256,13 @@ void declare_output(ParameterHandler& prm) {
   prm.declare_entry("Write VTU", "true", Patterns::Bool(),
                     "Write one VTU per load step for the garment and the body, with .pvd "
                     "time series for ParaView.");
+  prm.declare_entry("Body pressure", "true", Patterns::Bool(),
+                    "The body VTU carries the garment's pressure mapped onto the body's surface "
+                    "(pressure_Pa, pressure_mmHg, under_garment), on the body's display surface "
+                    "refined to Body edge length (docs/measurements.md).");
+  prm.declare_entry("Body edge length", "0", Patterns::Double(0),
+                    "Longest edge of the body's surface in the body VTU and the pictures, m; 0: "
+                    "half the garment's mean edge length.");
   prm.leave_subsection();
 }
 
@@ -328,6 +346,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
 
   prm.enter_subsection("Contact");
   c.penalty_factor = prm.get_double("Penalty factor");
+  c.friction_coefficient = prm.get_double("Friction coefficient");
+  c.tangential_penalty_ratio = prm.get_double("Tangential penalty ratio");
   prm.leave_subsection();
 
   prm.enter_subsection("Protocol");
@@ -357,6 +377,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   prm.enter_subsection("Output");
   c.output.directory = prm.get("Directory");
   c.output.write_vtu = prm.get_bool("Write VTU");
+  c.output.body_pressure = prm.get_bool("Body pressure");
+  c.output.body_edge_length_m = prm.get_double("Body edge length");
   prm.leave_subsection();
 
   prm.enter_subsection("Solver");
@@ -446,7 +468,13 @@ CaseParameters CaseFile::parameters() const {
 
 std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
                                                   const Problem& problem) const {
-  return backend_registry().find(name).create(problem, *prm_);
+  const BackendEntry& entry = backend_registry().find(name);
+  if (problem.friction_coefficient > 0 && !entry.applies_friction)
+    throw std::invalid_argument("Contact/Friction coefficient = " +
+                                std::to_string(problem.friction_coefficient) + ": the " + name +
+                                " backend has no friction yet; set it to 0 or use Solver/Backend "
+                                "= massspring");
+  return entry.create(problem, *prm_);
 }
 
 void CaseFile::print(std::ostream& out, ParameterFormat format) const {

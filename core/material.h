@@ -15,7 +15,7 @@
 
 namespace tightfit {
 
-// The fabric: the paper's Table 2 (shared/reference/paper-data.md) by default.
+// The fabric: the paper's Table 2 by default.
 struct FabricParameters {
   // Y1 = E t along the weft / course (x axis), N/m. Table 2: 1.3 N/cm.
   double stiffness_weft_N_per_m = 130.0;

@@ -1,4 +1,4 @@
-// The three membrane laws of cylinder-theory.md, each written once as an energy W(C).
+// The three membrane laws of docs/model.md ("Closed forms"), each written once as an energy W(C).
 #include "core/dual.h"
 #include "core/material.h"
 

@@ -1,7 +1,7 @@
-// The closed forms of cylinder-theory.md against an independent route: the uniform state of
-// the tube solved numerically from the material law's own stress (hoop stretch a, axial
-// stretch b from zero axial stress or b = 1), then p = n / r with n = a S11 / b the hoop
-// tension per current length and r = a R0, so p = S11 / (b R0).
+// The closed forms (docs/model.md, "Closed forms") against an independent route: the uniform state
+// of the tube solved numerically from the material law's own stress (hoop stretch a, axial stretch
+// b from zero axial stress or b = 1), then p = n / r with n = a S11 / b the hoop tension per
+// current length and r = a R0, so p = S11 / (b R0).
 #include "cases/cylinder_theory.h"
 
 #include <gtest/gtest.h>
@@ -79,7 +79,7 @@ TEST(ClosedForm, BiotWithoutPoissonIsThePapersEquation7) {
 }
 
 TEST(ClosedForm, SmallStrainLimitIsStiffnessTimesStrainOverRadius) {
-  // cylinder-theory.md: p ~ Y e / R0 for free ends (Y = 3 G t0 for neo-Hookean).
+  // docs/model.md, "Closed forms": p ~ Y e / R0 for free ends (Y = 3 G t0 for neo-Hookean).
   FabricParameters fabric;
   const double e = 1e-6, R0 = 0.05;
   for (const std::string& name : material_law_names()) {

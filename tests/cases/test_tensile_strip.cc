@@ -77,8 +77,7 @@ TEST_P(TensileStrip, GripForceIsTheMeasuredForce) {
   const auto backend = file.create_backend(c.backend, problem);
   backend->set_positions(start);
   LoadStep step;
-  const StepReport report = backend->solve(step);
-  ASSERT_TRUE(report.converged) << report.detail;
+  backend->solve(step);  // throws a SolverError if it does not settle
   const SurfaceState state = backend->state();
 
   // The grip's reaction balances the garment's pull on the grip's vertices.
