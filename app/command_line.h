@@ -1,6 +1,7 @@
 // The tightfit command line: which command, which case files, which overrides.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +20,8 @@ struct CommandLine {
   std::string pattern_seams, pattern_folds;
   int rank = 0;  // this process among the MPI ranks
   int n_ranks = 1;
+  // Reports an error of this rank alone and ends every rank (OutputSettings::end_every_rank).
+  std::function<void(const std::string&)> end_every_rank;
 };
 
 // Thrown for a malformed command line; the message says what is wrong.

@@ -7,6 +7,7 @@
 #include "app/pattern_command.h"
 #include "app/run_command.h"
 #include "cases/case_parameters.h"
+#include "core/interruption.h"
 
 #include <iostream>
 #include <sstream>
@@ -22,6 +23,12 @@ int main(int argc, char** argv) {
     CommandLine cl = parse_command_line(argc, argv);
     cl.rank = mpi.rank();
     cl.n_ranks = mpi.n_ranks();
+    if (mpi.n_ranks() > 1)
+      cl.end_every_rank = [&mpi](const std::string& what) {
+        std::cerr << "tightfit (rank " << mpi.rank() << " of " << mpi.n_ranks()
+                  << "): error: " << what << std::endl;
+        mpi.abort_all_ranks(2);
+      };
     if (cl.command == "help") {
       out << usage_text();
       return 0;
@@ -37,9 +44,16 @@ int main(int argc, char** argv) {
       CaseFile().print(out, format);
       return 0;
     }
-    if (cl.command == "run") return run_command(cl, out);
-    if (cl.command == "compare") return compare_command(cl, out);
-    if (cl.command == "convergence") return convergence_command(cl, out);
+    // From here on Ctrl-C and SIGTERM end the run at the next iteration, keeping every finished
+    // load step, with status 128 + the signal's number.
+    install_interruption_handlers();
+    int status = 2;
+    if (cl.command == "run") status = run_command(cl, out);
+    if (cl.command == "compare") status = compare_command(cl, out);
+    if (cl.command == "convergence") status = convergence_command(cl, out);
+    if (interruption_signal() != 0) return 128 + interruption_signal();
+    if (cl.command == "run" || cl.command == "compare" || cl.command == "convergence")
+      return status;
     if (cl.command == "pattern") return pattern_command(cl, out);
     std::cerr << "tightfit: '" << cl.command << "' is not available yet\n";
     return 2;
@@ -47,6 +61,13 @@ int main(int argc, char** argv) {
     std::cerr << "tightfit: " << e.what() << "\n\n" << usage_text();
     return 2;
   } catch (const std::exception& e) {
+    // Under MPI an error may reach one rank only (its piece of the output cannot be written):
+    // it names itself and takes the others down with it instead of leaving them to hang.
+    if (mpi.n_ranks() > 1) {
+      std::cerr << "tightfit (rank " << mpi.rank() << " of " << mpi.n_ranks()
+                << "): error: " << e.what() << std::endl;
+      mpi.abort_all_ranks(2);
+    }
     std::cerr << "tightfit: error: " << e.what() << "\n";
     return 2;
   }

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cstdlib>
+
 namespace tightfit {
 
 struct MpiSession::State {
@@ -20,6 +22,11 @@ bool MpiSession::is_first_rank() const {
 
 int MpiSession::rank() const {
   return static_cast<int>(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
+}
+
+void MpiSession::abort_all_ranks(int status) const {
+  MPI_Abort(MPI_COMM_WORLD, status);
+  std::abort();  // MPI_Abort does not return; this tells the compiler so
 }
 
 int MpiSession::n_ranks() const {

@@ -17,6 +17,9 @@ class MpiSession {
   bool is_first_rank() const;
   int rank() const;  // 0 .. n_ranks() - 1 in MPI_COMM_WORLD
   int n_ranks() const;
+  // Ends every rank of the run with `status`. A rank that stops on an error while the others
+  // go on would leave them waiting for it in the next collective operation.
+  [[noreturn]] void abort_all_ranks(int status) const;
 
  private:
   struct State;

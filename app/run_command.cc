@@ -28,6 +28,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
     CaseParameters parameters = files.back()->parameters();
     parameters.output.rank = cl.rank;
     parameters.output.n_ranks = cl.n_ranks;
+    parameters.output.end_every_rank = cl.end_every_rank;
     setups.push_back(make_scenario(parameters));
   }
 
@@ -45,6 +46,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
         },
         dir, out);
     out << "\n" << pressure_summary_table(setup, result);
+    for (const TextTable& table : result.tables) out << "\n" << table;
     out << "  results in " << dir << "/ (pressure.csv, solver.log";
     for (const std::string& f : result.files) out << ", " << f;
     out << (setup.parameters.output.write_vtu ? ", garment.pvd, body.pvd" : "") << ")\n";
@@ -53,6 +55,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
       status = 1;
     }
     out << "\n";
+    if (result.interrupted_by != 0) break;  // main returns 128 + the signal
   }
   return status;
 }

@@ -1,6 +1,6 @@
 // Everything a case file (.prm) says, as plain structs: the scenario's parts (garment, body,
-// placement, constraints, load steps, measurements; docs/scenarios.md) and the solver's. The deal.II ParameterHandler that
-// reads them stays inside case_parameters.cc.
+// placement, constraints, load steps, measurements; docs/scenarios.md) and the solver's. The
+// deal.II ParameterHandler that reads them stays inside case_parameters.cc.
 #pragma once
 
 #include "cases/measurement.h"
@@ -81,6 +81,11 @@ struct NamedMeasurement {
 struct OutputSettings {
   std::string directory = "output";
   bool write_vtu = true;
+  // The body VTU carries the garment's pressure on a refined copy of the body's surface
+  // (cases/body_surface_pressure.h), its edges at most body_edge_length_m (0: half the
+  // garment's mean edge length).
+  bool body_pressure = true;
+  double body_edge_length_m = 0.0;
   // False for a run that only wants the numbers back (no file at all).
   bool write_files = true;
   // This process among the MPI ranks of the run. Every rank holds the whole result: the first
@@ -89,6 +94,11 @@ struct OutputSettings {
   int rank = 0;
   int n_ranks = 1;
   bool is_first_rank() const { return rank == 0; }
+  // With several ranks: reports an error that reached this rank alone (its piece of the
+  // output cannot be written) and ends every rank, before unwinding this rank's solver
+  // objects, whose destructors would wait for the others (MPI_Abort). Unset: the error is
+  // thrown as usual.
+  std::function<void(const std::string&)> end_every_rank;
 };
 
 struct CaseParameters {
@@ -99,6 +109,8 @@ struct CaseParameters {
   PlacementSettings placement;
   ConstraintSettings constraints;
   double penalty_factor = 100.0;
+  double friction_coefficient = 0.0;      // Contact/Friction coefficient, mu
+  double tangential_penalty_ratio = 1.0;  // Contact/Tangential penalty ratio, k_t / (k A0)
   ProtocolSettings protocol;
   PressureSettings pressure;
   std::vector<NamedMeasurement> measurements;
@@ -123,7 +135,8 @@ class CaseFile {
   void set(const std::string& assignment);
   // The values now held, checked; throws std::invalid_argument naming the entry at fault.
   CaseParameters parameters() const;
-  // Creates the backend called `name` from its subsection.
+  // Creates the backend called `name` from its subsection. Throws std::invalid_argument when the
+  // problem has friction and the backend does not apply it.
   std::unique_ptr<Backend> create_backend(const std::string& name, const Problem& problem) const;
   // Every entry with its documentation and default: as readable text, as a .prm file to
   // start a case from, or as JSON (with each entry's pattern: docs/parameters.md is made from it).

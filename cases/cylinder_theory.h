@@ -1,5 +1,5 @@
-// Closed-form pressure of a membrane tube on a rigid cylinder (shared/reference/
-// cylinder-theory.md): the reference every backend is verified against.
+// Closed-form pressure of a membrane tube on a rigid cylinder (docs/model.md, "Closed
+// forms"): the reference every backend is verified against.
 #pragma once
 
 #include "core/material.h"
@@ -8,7 +8,7 @@
 
 namespace tightfit {
 
-// Cylinder-theory.md's two end conditions for a tube.
+// The closed forms' two end conditions for a tube.
 enum class EndCondition {
   free_ends,  // no axial force at the tube's ends (the paper's assumption)
   held_ends,  // the end vertices keep their axial coordinate (axial stretch 1)
@@ -24,8 +24,8 @@ double closed_form_pressure_Pa(const std::string& law_name, EndCondition ends,
 // The paper's Eq. 7, P = E t (1 - 1/alpha) / R0, with E t the hoop (weft) stiffness.
 double paper_eq7_pressure_Pa(double hoop_stiffness_N_per_m, double rest_radius_m, double alpha);
 
-// Free-end axial stretch b (cylinder-theory.md, "Derivation of the free-end axial stretch");
-// 1 for held ends.
+// Free-end axial stretch b (docs/model.md, "Closed forms": no axial stress at the free
+// ends); 1 for held ends.
 double axial_stretch(const std::string& law_name, EndCondition ends, const FabricParameters& fabric,
                      double alpha);
 

@@ -1,5 +1,7 @@
 #include "cases/scenario_run.h"
 
+#include "cases/body_surface_pressure.h"
+#include "core/interruption.h"
 #include "core/units.h"
 #include "io/csv_table.h"
 #include "io/pvd_writer.h"
@@ -17,10 +19,22 @@
 namespace tightfit {
 
 std::vector<std::string> pressure_table_columns() {
-  return {"step",          "alpha",          "p_mean_Pa",          "p_std_Pa",
-          "p_theory_Pa",   "rel_error",      "p_mean_gf_cm2",      "p_mean_mmHg",
-          "contact_fraction", "p_min_Pa",    "p_max_Pa",           "friction_max_Pa",
-          "vertex_area",   "pressure_definition", "iterations",    "residual_N",
+  return {"step",
+          "alpha",
+          "p_mean_Pa",
+          "p_std_Pa",
+          "p_theory_Pa",
+          "rel_error",
+          "p_mean_gf_cm2",
+          "p_mean_mmHg",
+          "contact_fraction",
+          "p_min_Pa",
+          "p_max_Pa",
+          "friction_max_Pa",
+          "vertex_area",
+          "pressure_definition",
+          "iterations",
+          "residual_N",
           "wall_time_s"};
 }
 
@@ -30,7 +44,8 @@ std::vector<CsvCell> pressure_row(const StepMeasurement& m) {
   const PressureSummary& s = m.summary;
   double friction_max_Pa = 0.0;
   for (std::size_t v = 0; v < m.field.friction_traction_Pa.size(); ++v)
-    if (m.field.contact[v]) friction_max_Pa = std::max(friction_max_Pa, m.field.friction_traction_Pa[v]);
+    if (m.field.contact[v])
+      friction_max_Pa = std::max(friction_max_Pa, m.field.friction_traction_Pa[v]);
   std::vector<CsvCell> row{m.step,
                            m.alpha,
                            s.mean_Pa,
@@ -93,8 +108,7 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   backend->set_positions(scenario.initial_positions());
 
   std::unique_ptr<CsvTable> table;
-  if (write_tables)
-  {
+  if (write_tables) {
     std::vector<std::string> columns = pressure_table_columns();
     columns.insert(columns.end(), result.columns.begin(), result.columns.end());
     table = std::make_unique<CsvTable>(path("pressure.csv"), columns);
@@ -112,45 +126,66 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
     body_series = std::make_unique<PvdWriter>(path("body.pvd"));
   }
 
+  auto stop = [&](const std::string& why) {
+    result.failure = why;
+    log << "  stopped: " << why << std::endl;
+    if (solver_log.is_open()) solver_log << "stopped: " << why << std::endl;
+  };
   for (std::size_t step = 0; step < scenario.alphas.size(); ++step) {
     try {
+      throw_if_interrupted(interruption_signal(), "before load step " + std::to_string(step));
       result.steps.push_back(
           solve_and_measure(scenario, *backend, static_cast<int>(step), measurements));
     } catch (const SolverError& e) {
-      result.failure = e.what();
-      log << "  stopped: " << e.what() << std::endl;
-      if (solver_log.is_open()) solver_log << "stopped: " << e.what() << std::endl;
+      stop(e.what());
+      break;
+    } catch (const Interrupted& e) {
+      result.interrupted_by = e.signal();
+      stop(std::string(e.what()) + "; " +
+           (step == 0 ? std::string("no load step had finished")
+                      : "load steps 0 to " + std::to_string(step - 1) + " are written"));
       break;
     }
     const StepMeasurement& m = result.steps.back();
-    if (table) table->write_row(pressure_row(m));
-    for (const auto& measurement : measurements) measurement->after_step(scenario, m, files);
-    if (solver_log.is_open())
-      solver_log << "step " << m.step << ", alpha " << m.alpha << ": " << m.report.detail
-                 << std::endl;
-    if (write_garment) {
-      char stem[64];
-      std::snprintf(stem, sizeof stem, "garment_%04zu", step);
-      SurfaceVtu garment = garment_vtu(scenario.mesh, m.state, m.field, m.alpha);
-      for (const auto& [array_name, values] : backend->extra_point_data())
-        garment.add_point_scalar(array_name, values);
-      // The first rank lists the step only after its own piece and the .pvtu header are on
-      // disk; the other ranks' pieces may land a moment later (complete when the run ends).
-      const std::string file =
-          write_vtu_share(garment, output_dir, stem, output.rank, output.n_ranks);
-      if (garment_series) garment_series->add(m.alpha, file);
-    }
-    if (write_series) {
-      char name[64];
-      std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
-      write_body_vtu(path(name), scenario.body->body().display_mesh());
-      body_series->add(m.alpha, name);
+    try {
+      if (table) table->write_row(pressure_row(m));
+      for (const auto& measurement : measurements) measurement->after_step(scenario, m, files);
+      if (solver_log.is_open())
+        solver_log << "step " << m.step << ", alpha " << m.alpha << ": " << m.report.detail
+                   << std::endl;
+      if (write_garment) {
+        char stem[64];
+        std::snprintf(stem, sizeof stem, "garment_%04zu", step);
+        SurfaceVtu garment = garment_vtu(scenario.mesh, m.state, m.field, m.alpha);
+        for (const auto& [array_name, values] : backend->extra_point_data())
+          garment.add_point_scalar(array_name, values);
+        // The first rank lists the step only after its own piece and the .pvtu header are on
+        // disk; the other ranks' pieces may land a moment later (complete when the run ends).
+        const std::string file =
+            write_vtu_share(garment, output_dir, stem, output.rank, output.n_ranks);
+        if (garment_series) garment_series->add(m.alpha, file);
+      }
+      if (write_series) {
+        char name[64];
+        std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
+        if (output.body_pressure)
+          body_pressure_vtu(body_surface_pressure(scenario, m), m.field).write(path(name));
+        else
+          write_body_vtu(path(name), scenario.body->body().display_mesh());
+        body_series->add(m.alpha, name);
+      }
+    } catch (const std::exception& e) {
+      // Writing is this rank's alone: under MPI the others must not be left waiting.
+      if (output.n_ranks > 1 && output.end_every_rank) output.end_every_rank(e.what());
+      throw;
     }
     print_progress(log, m, scenario.alphas.size());
   }
   for (const auto& measurement : measurements) {
     measurement->after_run(scenario, result.steps, files);
     for (const std::string& f : measurement->file_names()) result.files.push_back(f);
+    for (TextTable& t : measurement->summary_tables(scenario, result.steps))
+      result.tables.push_back(std::move(t));
   }
   result.completed = result.failure.empty();
   return result;

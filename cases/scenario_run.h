@@ -20,14 +20,17 @@ struct RunResult {
   std::vector<StepMeasurement> steps;  // the steps that finished
   std::vector<std::string> columns;    // the measurements' extra pressure.csv columns
   std::vector<std::string> files;      // the files the measurements wrote
+  std::vector<TextTable> tables;       // the measurements' tables for the screen
   bool completed = false;
-  std::string failure;  // why the run stopped early, if it did
+  std::string failure;     // why the run stopped early, if it did
+  int interrupted_by = 0;  // the signal (SIGINT, SIGTERM) that stopped it, if one did
 };
 
 // Writes into `output_dir` (created if needed): pressure.csv, solver.log (each step's
 // StepReport::detail), what the case's measurements write, and with Output/Write VTU
 // garment_NNNN.vtu, body_NNNN.vtu, garment.pvd, body.pvd. Progress goes to `log`. A backend
-// failure ends the run with completed = false; what was written stays.
+// failure, or a SIGINT/SIGTERM (core/interruption.h), ends the run with completed = false and
+// a note of where it stopped in `log` and solver.log; what was written stays.
 RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
                        const std::string& output_dir, std::ostream& log);
 

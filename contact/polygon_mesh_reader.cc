@@ -1,6 +1,7 @@
 // VTK's readers for OBJ, STL and PLY; VTK stays inside this file.
 #include "contact/body_mesh_error.h"
 #include "contact/polygon_mesh.h"
+#include "core/memory_budget.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -18,8 +19,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -74,6 +77,15 @@ vtkSmartPointer<vtkPolyDataAlgorithm> reader_for(const std::string& path, const 
                       "' (expected .obj, .stl or .ply)");
 }
 
+// require_memory's refusal as the readers' own error type.
+void require_body_memory(const std::string& path, double faces, const std::string& items) {
+  try {
+    require_memory("body mesh '" + path + "'", faces, items, bytes_per_body_face);
+  } catch (const std::invalid_argument& e) {
+    throw BodyMeshError(e.what());
+  }
+}
+
 BodyMeshError file_error(const std::string& path, int line, const std::string& message) {
   return BodyMeshError("body mesh '" + path + "', line " + std::to_string(line) + ": " + message);
 }
@@ -125,6 +137,7 @@ void check_ply_complete(const std::string& path) {
     if (keyword == "element") {
       long count = 0;
       words >> current >> count;
+      if (count < 0) throw file_error(path, number, "a negative element count: '" + line + "'");
       if (current == "vertex") n_vertices = count;
       if (current == "face") n_faces = count;
     }
@@ -140,6 +153,7 @@ void check_ply_complete(const std::string& path) {
     }
   }
   if (!in) throw file_error(path, number, "the header has no end_header");
+  require_body_memory(path, static_cast<double>(n_faces), "faces announced");
   if (format == "ascii") {
     long data_lines = 0;
     while (std::getline(in, line))
@@ -153,12 +167,54 @@ void check_ply_complete(const std::string& path) {
   const auto data_start = in.tellg();
   in.seekg(0, std::ios::end);
   const long available = static_cast<long>(in.tellg() - data_start);
-  const long needed = n_vertices * vertex_bytes + n_faces * face_bytes;
+  const double needed =
+      static_cast<double>(n_vertices) * vertex_bytes + static_cast<double>(n_faces) * face_bytes;
   if (available < needed)
     throw BodyMeshError("body mesh '" + path + "': truncated: " + std::to_string(available) +
                         " bytes of data where the header's " + std::to_string(n_vertices) +
                         " vertices and " + std::to_string(n_faces) + " faces need at least " +
-                        std::to_string(needed));
+                        std::to_string(static_cast<long long>(needed)));
+}
+
+// A binary STL is an 80-byte header, a facet count n and 50 bytes per facet. VTK's reader
+// allocates for the larger of n and what the file can hold before reading a facet, so a count
+// the file cannot hold (a bogus or hostile header) would allocate without bound: refused
+// here, for any file that is not plain text (VTK may take such a file for binary even when
+// its header starts with "solid", as many exporters write). Plain text is an ASCII STL, which
+// VTK reads as it goes. Either way the file's size bounds the facets.
+void check_stl_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const bool text = std::all_of(bytes.begin(), bytes.end(), [](unsigned char c) {
+    return c == '\t' || c == '\n' || c == '\r' || c == '\f' || (c >= 32 && c < 127);
+  });
+  if (text) {
+    // An ASCII facet takes at least about 100 bytes ("facet normal", a loop of 3 vertices).
+    require_body_memory(path, bytes.size() / 100.0, "facets (ASCII STL)");
+    return;
+  }
+  if (bytes.size() < 84)
+    throw BodyMeshError("body mesh '" + path + "': a binary STL of " +
+                        std::to_string(bytes.size()) +
+                        " bytes, shorter than its 84-byte header and facet count");
+  const auto byte = [&](int k) {
+    return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[k]));
+  };
+  const std::uint32_t count = byte(80) | byte(81) << 8 | byte(82) << 16 | byte(83) << 24;
+  const double needed = 84.0 + 50.0 * count;
+  if (needed > static_cast<double>(bytes.size()))
+    throw BodyMeshError("body mesh '" + path + "': truncated binary STL: the header announces " +
+                        std::to_string(count) + " facets, " +
+                        std::to_string(static_cast<long long>(needed)) + " bytes, the file has " +
+                        std::to_string(bytes.size()));
+  require_body_memory(path, (bytes.size() - 84) / 50.0, "facets");
+}
+
+// OBJ: a face line and its share of the vertex lines take about 30 bytes of text.
+void check_obj_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  require_body_memory(path, static_cast<double>(in.tellg()) / 30.0,
+                      "faces (estimated from the file's size)");
 }
 
 }  // namespace
@@ -167,8 +223,10 @@ PolygonMesh read_polygon_mesh(const std::string& path) {
   if (!std::ifstream(path)) throw BodyMeshError("body mesh '" + path + "': cannot open the file");
   const std::string ext = lower_extension(path);
   auto reader = reader_for(path, ext);
+  if (ext == "obj") check_obj_size(path);
   if (ext == "obj") check_obj_vertex_lines(path);
   if (ext == "ply") check_ply_complete(path);
+  if (ext == "stl") check_stl_size(path);
   // The reader's own reports say what is wrong; the pipeline's only that the reader failed.
   std::string messages, pipeline_messages;
   auto observer = vtkSmartPointer<vtkCallbackCommand>::New();

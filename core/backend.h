@@ -23,8 +23,8 @@ struct VertexConstraint {
     fixed,                 // the vertices do not move at all
   };
   Kind kind = Kind::held_along_direction;
-  std::string group;          // the vertex group's name, for messages
-  std::vector<int> vertices;  // welded vertex indices
+  std::string group;               // the vertex group's name, for messages
+  std::vector<int> vertices;       // welded vertex indices
   Vec3 direction = Vec3::UnitZ();  // held_along_direction only
 };
 
@@ -37,6 +37,10 @@ struct Problem {
   const RigidBody* body = nullptr;
   // Penalty contact: pressure per unit penetration depth, Pa/m.
   double contact_stiffness_Pa_per_m = 0.0;
+  // Coulomb friction (contact/friction_anchors.h): the coefficient mu (0: frictionless) and the
+  // tangential penalty per unit rest area, Pa/m (a vertex's k_t is this times its rest area).
+  double friction_coefficient = 0.0;
+  double tangential_stiffness_Pa_per_m = 0.0;
   // Vertices held along a direction or fixed; none for a garment free on the body.
   std::vector<VertexConstraint> constraints;
   // Gravity when a load step turns it on, m/s^2.
@@ -49,8 +53,9 @@ struct LoadStep {
   bool gravity_on = false;
 };
 
+// What solve() reports of a step it finished: it returns only at equilibrium (residual below
+// the stop rule's threshold) and throws SolverError otherwise.
 struct StepReport {
-  bool converged = false;
   int iterations = 0;        // frames (mass-spring) or Newton steps (FE)
   double residual_N = 0.0;   // largest residual force on a free vertex at the end
   double tolerance_N = 0.0;  // the stop rule's threshold

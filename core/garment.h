@@ -1,4 +1,4 @@
-// Garments in pattern space (shared/design/architecture.md).
+// Garments in pattern space.
 //
 // A garment is cut from flat panels. Each panel vertex has rest coordinates X in the panel's
 // own plane (metres, x along the weft, y along the warp), and seams identify vertices of

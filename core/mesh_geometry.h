@@ -18,7 +18,8 @@ enum class VertexAreaDefinition {
   // balances force (the default).
   barycentric,
   // The whole of each adjacent triangle, as the paper's Section 2.2 defines it: the areas sum
-  // to three times the mesh area, so the pressure reads a third (cylinder-theory.md).
+  // to three times the mesh area, so the pressure reads a third (docs/model.md, "The pressure
+  // extractor").
   adjacent_triangles,
   // The mixed Voronoi area (Meyer, Desbrun, Schroeder and Barr, "Discrete differential-geometry
   // operators for triangulated 2-manifolds", 2003, Fig. 4): the part of each adjacent triangle

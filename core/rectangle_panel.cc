@@ -1,7 +1,10 @@
 #include "core/rectangle_panel.h"
 
+#include "core/memory_budget.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace tightfit {
@@ -42,8 +45,15 @@ Panel make_rectangle_panel(const std::string& name, double width_m, double heigh
   spacing.validate();
   if (!(width_m > 0) || !(height_m > 0))
     throw std::invalid_argument("panel '" + name + "': width and height must be positive (m)");
-  const int nx = std::max(1, static_cast<int>(std::lround(width_m / spacing.along_x_m)));
-  const int ny = std::max(1, static_cast<int>(std::lround(height_m / spacing.along_y_m)));
+  // Counted in floating point first: a tiny edge length would overflow an int.
+  const double cells_x = std::max(1.0, std::round(width_m / spacing.along_x_m));
+  const double cells_y = std::max(1.0, std::round(height_m / spacing.along_y_m));
+  char what[160];
+  std::snprintf(what, sizeof what, "panel '%s' (%g x %g m at edge lengths %g x %g m)", name.c_str(),
+                width_m, height_m, spacing.along_x_m, spacing.along_y_m);
+  require_memory(std::string(what) + ": a run", (cells_x + 1) * (cells_y + 1), "vertices",
+                 run_bytes_per_garment_vertex);
+  const int nx = static_cast<int>(cells_x), ny = static_cast<int>(cells_y);
   const double dx = width_m / nx, dy = height_m / ny;
 
   Panel panel;

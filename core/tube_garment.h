@@ -9,7 +9,7 @@ namespace tightfit {
 // `n_panels` equal panels, each panel_width_m (round the tube, along the weft) by
 // panel_height_m (along the tube, the warp), sewn right edge to the next panel's left edge
 // into a closed ring of circumference n_panels * panel_width_m. The paper's "T" is two panels
-// of 0.157 m x 0.24 m, its "4 5T" two of 0.1878 m x 0.24 m (paper-data.md, Table 3).
+// of 0.157 m x 0.24 m, its "4 5T" two of 0.1878 m x 0.24 m (the paper's Table 3).
 // Panel p lies at x offset p * panel_width_m in the layout plane; the last seam closes the
 // ring across the layout (a periodic identification).
 Garment make_tube_garment(const std::string& name, double panel_width_m, double panel_height_m,

@@ -108,7 +108,6 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   output_ = surface_output(pattern_, assembly_, *problem_.body, x_, contact_.nodes().multiplier_N,
                            step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{});
 
-  report.converged = true;
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.rounds.size()
          << " AL rounds, |R|_max N: ";
@@ -154,6 +153,10 @@ std::vector<std::pair<std::string, std::vector<double>>> FemBackend::extra_point
 
 std::vector<double> FemBackend::contact_traction_Pa() const {
   return impl_->output_.contact_traction_Pa;
+}
+
+const std::vector<double>& FemBackend::nodal_contact_force_N() const {
+  return impl_->contact_.nodes().multiplier_N;
 }
 
 double FemBackend::max_penetration_m() const {

@@ -1,4 +1,4 @@
-// The finite-element membrane backend (issue 3): the garment's pattern is the reference
+// The finite-element membrane backend: the garment's pattern is the reference
 // domain, the unknown is the 3D position field, seams are constraints, contact is
 // augmented-Lagrangian through contact/, and each load step is solved by Newton's method.
 // deal.II stays behind the pointer to the implementation: this header is light.
@@ -46,6 +46,10 @@ class FemBackend final : public Backend {
   // extractor's pressure. Degree 1: the contact multiplier over the vertex's current
   // barycentric area. Degree 2: the traction recovered on the curved surface.
   std::vector<double> contact_traction_Pa() const;
+  // The contact multipliers of every node (vertices, then with degree 2 the edge midpoints)
+  // after the last step, N: the solver's own nodal contact forces, before any traction is
+  // recovered from them.
+  const std::vector<double>& nodal_contact_force_N() const;
   // Largest penetration of a vertex in contact after the last step, m.
   double max_penetration_m() const;
   // Residual-force history (largest component, N) of every Newton iteration of the last step.

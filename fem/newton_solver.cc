@@ -1,5 +1,7 @@
 #include "fem/newton_solver.h"
 
+#include "core/interruption.h"
+
 #include <petscmat.h>
 
 #include <algorithm>
@@ -67,6 +69,11 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     history_N.push_back(residual_N);
     if (!std::isfinite(residual_N)) fail(step, "the residual is not finite", residual_N);
     if (residual_N <= tolerance) return iteration;
+    // Collective, so that every rank stops at the same iteration whichever got the signal.
+    throw_if_interrupted(dealii::Utilities::MPI::max(interruption_signal(), comm_),
+                         "during load step " + std::to_string(step.index) + " (alpha " +
+                             std::to_string(step.alpha) + ") at Newton iteration " +
+                             std::to_string(iteration));
     // Inexact Newton (Eisenstat and Walker's second forcing term): solve each system only as
     // far as the residual's own decrease warrants, eta = 0.9 (|R_k| / |R_k-1|)^2 within
     // [linear tolerance, 1e-2]; convergence stays superlinear. Where the residual fell by less

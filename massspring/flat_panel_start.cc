@@ -1,6 +1,7 @@
 #include "massspring/flat_panel_start.h"
 
 #include "contact/penalty_contact.h"
+#include "core/interruption.h"
 #include "massspring/flat_panel_placement.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/stable_time_step.h"
@@ -126,6 +127,9 @@ FlatPanelResult FlatPanelStart::run(const LoadStep& step) {
   while (!(result.largest_seam_gap_m < result.closed_below_m)) {
     if (result.frames >= parameters_.maximum_frames)
       throw fail("the seams did not close within Mass spring/Maximum frames");
+    throw_if_interrupted(interruption_signal(), "during the flat-panel start of load step " +
+                                                    std::to_string(step.index) + " at frame " +
+                                                    std::to_string(result.frames));
     // Chosen every frame: the seam springs stretch the panels' edges fast, and a stiffening
     // law's tangent grows with them. The start lasts tens of frames, so this costs little.
     dt = choose_time_step_s();

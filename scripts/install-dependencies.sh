@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what tightfit needs from Debian 12's packages, skipping what is already installed.
-# Safe to run any number of times.
+# Safe to run any number of times. `--fuzz` adds clang and its libFuzzer and sanitizer runtimes
+# for scripts/fuzz.sh (not needed to build, test or run tightfit).
 set -euo pipefail
 
 packages=(
@@ -13,6 +14,9 @@ packages=(
   libgtest-dev libbenchmark-dev  # tests and benchmarks
   gnuplot-nox                    # plots
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)  # libFuzzer, ASan and UBSan runtimes
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace tightfit {
@@ -24,14 +26,34 @@ TEST(RectanglePanel, TrianglesTileTheRectangleCounterClockwise) {
   EXPECT_NEAR(area, 0.1878 * 0.24, 1e-12);
 }
 
-TEST(RectanglePanel, EveryTriangleIsAcuteSoTheMeshIsDelaunay) {
+// The grid's cells are cut by one diagonal: every triangle has one right corner and two acute
+// ones, and the mesh is Delaunay: the two corners facing an interior edge sum to at most pi
+// (exactly pi across each diagonal, whose four points lie on one circle).
+TEST(RectanglePanel, EveryTriangleIsRightAngledAndTheMeshIsDelaunay) {
   const Panel panel = make_rectangle_panel("p", 0.157, 0.24, MeshSpacing{});
-  for (const Triangle& t : panel.triangles)
+  const auto& x = panel.rest_positions_m;
+  std::map<std::pair<int, int>, std::vector<double>> facing_angles;  // edge -> opposite corners
+  for (const Triangle& t : panel.triangles) {
+    int right = 0, acute = 0;
     for (int i = 0; i < 3; ++i) {
-      const Vec2 a = panel.rest_positions_m[t[(i + 1) % 3]] - panel.rest_positions_m[t[i]];
-      const Vec2 b = panel.rest_positions_m[t[(i + 2) % 3]] - panel.rest_positions_m[t[i]];
-      EXPECT_GE(a.dot(b), -1e-9 * a.norm() * b.norm()) << "obtuse corner";  // right is fine
+      const int j = t[(i + 1) % 3], k = t[(i + 2) % 3];
+      const Vec2 a = x[j] - x[t[i]], b = x[k] - x[t[i]];
+      const double cosine = a.dot(b) / (a.norm() * b.norm());
+      if (std::abs(cosine) < 1e-12) ++right;
+      if (cosine >= 1e-12) ++acute;
+      facing_angles[std::minmax(j, k)].push_back(std::acos(std::clamp(cosine, -1.0, 1.0)));
     }
+    EXPECT_EQ(right, 1);
+    EXPECT_EQ(acute, 2);
+  }
+  int interior = 0;
+  for (const auto& [edge, angles] : facing_angles) {
+    ASSERT_LE(angles.size(), 2u);
+    if (angles.size() < 2) continue;
+    ++interior;
+    EXPECT_LE(angles[0] + angles[1], M_PI + 1e-12) << edge.first << "-" << edge.second;
+  }
+  EXPECT_GT(interior, 0);
 }
 
 TEST(TubeGarment, WeldingClosesTheTubeIntoAnAnnulus) {
@@ -48,7 +70,7 @@ TEST(TubeGarment, WeldingClosesTheTubeIntoAnAnnulus) {
 }
 
 TEST(TubeGarment, DefaultSpacingGivesThePapersVertexCounts) {
-  // paper-data.md, Table 3: 575 vertices for "4 5T" and 485 for "T": no finer than those.
+  // The paper's Table 3: 575 vertices for "4 5T" and 485 for "T": no finer than those.
   const SimulationMesh large = weld(make_tube_garment("4 5T", 0.1878, 0.24, 2, MeshSpacing{}));
   const SimulationMesh small = weld(make_tube_garment("T", 0.157, 0.24, 2, MeshSpacing{}));
   EXPECT_LE(large.n_vertices, 575);

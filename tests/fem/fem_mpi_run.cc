@@ -1,4 +1,4 @@
-// The 2-rank check (issue 3, item 6): `fem_mpi_run write FILE` solves the 4 5T tube on the
+// The 2-rank check: `fem_mpi_run write FILE` solves the 4 5T tube on the
 // cylinder (St. Venant-Kirchhoff, held ends, alpha 1.2 - 1.8) and writes the mean pressures;
 // `mpirun -np 2 fem_mpi_run compare FILE` solves the same case with the mesh and the solves
 // distributed and fails unless every mean pressure equals the serial one to 1e-8 relative.

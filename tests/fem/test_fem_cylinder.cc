@@ -1,6 +1,6 @@
 // The FE backend on the paper's cylinder: its assembled forces against an independent triangle
 // element and finite differences, and its pressure against the six closed forms of
-// cylinder-theory.md.
+// docs/model.md ("Closed forms").
 #include "cases/cylinder_theory.h"
 #include "core/mesh_geometry.h"
 #include "fem/fem_backend.h"
@@ -111,20 +111,26 @@ double force_over_area_Pa(const TubeCase& tube, const SurfaceState& state) {
 struct LawAndEnds {
   const char* law;
   EndCondition ends;
+  // Measured relative error of the mean pressure at alpha 1.2, 1.5, 1.8 (the printout below).
+  double measured_error[3];
 };
 
 class CylinderClosedForm : public ::testing::TestWithParam<LawAndEnds> {};
 
-// The paper mesh (4 5T at the default spacing: 42 vertices round the even rows). Linear
-// elements inscribe a polygon in the circle: with N vertices round the hoop the hoop strain is
-// under-read by about (pi/N)^2 / 6 = 9.3e-4 for N = 42, a pressure error of about
-// 9.3e-4 (1/alpha)/(1 - 1/alpha): 0.47% at alpha 1.2, 0.19% at 1.5, 0.12% at 1.8.
-TEST_P(CylinderClosedForm, MeanPressureWithinOnePercentOnThePaperMesh) {
+// The paper mesh (4 5T at the default spacing: 46 vertices round the hoop). Linear elements
+// inscribe a polygon in the circle, so the hoop stretch is under-read by about
+// (pi/N)^2 / 6 and every error is negative: measured -0.11% to -0.61% (the laws magnify the
+// stretch error differently). Newton converges far below these, so each error must stay
+// within 2% of its measured value (and below zero); the spread, measured at most 6.4e-10
+// (every vertex has the same neighbourhood), under 1e-8.
+TEST_P(CylinderClosedForm, MeanPressureReadsTheMeasuredPolygonErrorOnThePaperMesh) {
   const LawAndEnds c = GetParam();
   TubeCase tube(c.law, c.ends);
   FemBackend backend(tube.problem, FemParameters{});
   bool placed = false;
+  int index = 0;
   for (const double alpha : {1.2, 1.5, 1.8}) {
+    const double measured = c.measured_error[index++];
     tube.grow_to(alpha);
     if (!placed) backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
     placed = true;
@@ -143,24 +149,28 @@ TEST_P(CylinderClosedForm, MeanPressureWithinOnePercentOnThePaperMesh) {
         c.law, c.ends == EndCondition::free_ends ? "free" : "held", alpha, p.mean_Pa, theory,
         p.mean_Pa / theory - 1, p.std_Pa / p.mean_Pa, force_over_area / theory - 1,
         traction_mean / theory - 1, report.detail.c_str());
-    EXPECT_TRUE(report.converged);
     EXPECT_EQ(p.contact_fraction, 1.0);
-    EXPECT_NEAR(p.mean_Pa / theory, 1.0, 0.01) << "alpha " << alpha;
-    EXPECT_NEAR(force_over_area / theory, 1.0, 0.01) << "alpha " << alpha;
-    EXPECT_LE(p.std_Pa / p.mean_Pa, 0.005) << "alpha " << alpha;
-    EXPECT_NEAR(traction_mean / theory, 1.0, 0.01) << "alpha " << alpha;
+    for (const double error :
+         {p.mean_Pa / theory - 1, force_over_area / theory - 1, traction_mean / theory - 1}) {
+      EXPECT_LT(error, 0.0) << "alpha " << alpha;
+      EXPECT_NEAR(error, measured, 0.02 * std::abs(measured)) << "alpha " << alpha;
+    }
+    EXPECT_LE(p.std_Pa / p.mean_Pa, 1e-8) << "alpha " << alpha;
     EXPECT_LE(backend.max_penetration_m(), 1e-9);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(
     SixClosedForms, CylinderClosedForm,
-    ::testing::Values(LawAndEnds{"linear biot", EndCondition::free_ends},
-                      LawAndEnds{"linear biot", EndCondition::held_ends},
-                      LawAndEnds{"st venant kirchhoff", EndCondition::free_ends},
-                      LawAndEnds{"st venant kirchhoff", EndCondition::held_ends},
-                      LawAndEnds{"neo hookean", EndCondition::free_ends},
-                      LawAndEnds{"neo hookean", EndCondition::held_ends}));
+    ::testing::Values(
+        LawAndEnds{"linear biot", EndCondition::free_ends, {-4.859e-3, -2.593e-3, -2.085e-3}},
+        LawAndEnds{"linear biot", EndCondition::held_ends, {-4.663e-3, -2.332e-3, -1.749e-3}},
+        LawAndEnds{
+            "st venant kirchhoff", EndCondition::free_ends, {-6.105e-3, -4.043e-3, -3.948e-3}},
+        LawAndEnds{
+            "st venant kirchhoff", EndCondition::held_ends, {-5.858e-3, -3.572e-3, -3.023e-3}},
+        LawAndEnds{"neo hookean", EndCondition::free_ends, {-4.370e-3, -2.148e-3, -1.648e-3}},
+        LawAndEnds{"neo hookean", EndCondition::held_ends, {-3.676e-3, -1.543e-3, -1.105e-3}}));
 
 }  // namespace
 }  // namespace tightfit
@@ -243,15 +253,39 @@ TEST(CylinderFailure, NewtonFailureNamesTheStepAndResidual) {
   }
 }
 
-// Below the rest radius the garment hangs loose: it converges without touching the body.
-TEST(CylinderContact, LooseGarmentIsAlreadyInEquilibrium) {
+// Below the rest radius the garment hangs loose. Placed on the circle of its rest radius R0
+// its N vertices round the hoop form an inscribed polygon whose chords, 2 R0 sin(pi/N), are
+// shorter than the rest edges 2 pi R0 / N: the tube opens out, every vertex moving straight
+// out to the polygon of rest-length sides, of circumradius pi R0 / (N sin(pi/N)) (0.69 mm
+// out for N = 12), its rows at their heights, and touches nothing.
+TEST(CylinderContact, LooseGarmentOpensToItsRestPolygon) {
   TubeCase tube("linear biot", EndCondition::free_ends, MeshSpacing{0.03, 0.06});
   FemBackend backend(tube.problem, FemParameters{});
   tube.grow_to(0.8);
-  backend.set_positions(tube.placed(tube.rest_radius_m));
+  const std::vector<Vec3> start = tube.placed(tube.rest_radius_m);
+  backend.set_positions(start);
   const StepReport report = backend.solve({0, 0.8, false});
-  EXPECT_TRUE(report.converged);
-  for (char c : backend.state().in_contact) EXPECT_EQ(c, 0);
+  const SurfaceState state = backend.state();
+  double z_min = start[0].z();
+  for (const Vec3& x : start) z_min = std::min(z_min, x.z());
+  int n_round = 0;
+  for (const Vec3& x : start) n_round += x.z() == z_min;
+  const double R0 = tube.rest_radius_m;
+  const double expected_m = M_PI * R0 / (n_round * std::sin(M_PI / n_round));
+  double radius_error_m = 0.0, height_error_m = 0.0;
+  for (int w = 0; w < tube.mesh.n_vertices; ++w) {
+    const Vec3& x = state.positions_m[w];
+    radius_error_m = std::max(radius_error_m, std::abs(std::hypot(x.x(), x.y()) - expected_m));
+    height_error_m = std::max(height_error_m, std::abs(x.z() - start[w].z()));
+  }
+  std::printf(
+      "loose garment, N = %d: circumradius %.6e m expected (%.3e m out), largest error "
+      "%.3e m in radius, %.3e m in height, %d Newton steps\n",
+      n_round, expected_m, expected_m - R0, radius_error_m, height_error_m, report.iterations);
+  // Measured 3.2e-15 m and 1.5e-15 m: round-off after Newton's third step.
+  EXPECT_LT(radius_error_m, 1e-12);
+  EXPECT_LT(height_error_m, 1e-12);
+  for (char c : state.in_contact) EXPECT_EQ(c, 0);
 }
 
 }  // namespace
@@ -278,7 +312,6 @@ TEST(CylinderKrylov, AmgSolversMatchTheDirectSolve) {
     means.push_back(tube.pressure(backend.state()).mean_Pa);
     std::printf("%s, %d vertices: p_mean %.10f Pa | %s\n", to_string(kind), tube.mesh.n_vertices,
                 means.back(), report.detail.c_str());
-    EXPECT_TRUE(report.converged);
   }
   EXPECT_NEAR(means[1] / means[0], 1.0, 1e-8);
   EXPECT_NEAR(means[2] / means[0], 1.0, 1e-8);
@@ -326,6 +359,13 @@ struct TubeSolve {
   double spread = 0.0;  // std / mean of the extractor's pressure over the contact vertices
   double contact_fraction = 0.0;
   double traction_error = 0.0;  // |mean contact traction / theory - 1|
+  // The solver's nodal contact forces (every node, midpoints included) over the cylinder's
+  // area under the tube, 2 pi r (z_max - z_min), against theory: independent of the traction
+  // recovery and of the extractor.
+  double nodal_error = 0.0;
+  // |F/A - nodal force over area| / theory: what the recovery and the extractor's flat
+  // areas change in the total force.
+  double recovery_gap = 0.0;
   double seconds = 0.0;
   std::string detail;
 };
@@ -347,14 +387,23 @@ TubeSolve solve_tube(int degree, int per_panel, EndCondition ends = EndCondition
   const PressureSummary p = tube.pressure(state);
   double traction_mean = 0.0;
   for (double t : backend.contact_traction_Pa()) traction_mean += t / tube.mesh.n_vertices;
+  double nodal_force_N = 0.0;
+  for (double f : backend.nodal_contact_force_N()) nodal_force_N += std::max(0.0, f);
+  double z_min = state.positions_m[0].z(), z_max = z_min;
+  for (const Vec3& x : state.positions_m) {
+    z_min = std::min(z_min, x.z());
+    z_max = std::max(z_max, x.z());
+  }
+  const double nodal_Pa = nodal_force_N / (2 * M_PI * tube.cylinder->radius_m() * (z_max - z_min));
   TubeSolve s;
   s.error = std::abs(force_over_area_Pa(tube, state) / theory - 1.0);
+  s.nodal_error = std::abs(nodal_Pa / theory - 1.0);
+  s.recovery_gap = std::abs(force_over_area_Pa(tube, state) - nodal_Pa) / theory;
   s.spread = p.std_Pa / p.mean_Pa;
   s.contact_fraction = p.contact_fraction;
   s.traction_error = std::abs(traction_mean / theory - 1.0);
   s.seconds = report.wall_seconds;
   s.detail = report.detail;
-  EXPECT_TRUE(report.converged);
   EXPECT_LE(backend.max_penetration_m(), 1e-9);
   return s;
 }
@@ -363,20 +412,32 @@ TubeSolve solve_tube(int degree, int per_panel, EndCondition ends = EndCondition
 // hoop length, hence the hoop strain and the pressure p = T / r, then errs by O(h^4), twice
 // the degree (linear triangles: O(h^2), the inscribed polygon). On the coarsest mesh (12
 // triangles round the hoop) the quadratic error must be far below the linear one, and each
-// halving of the hoop spacing must divide it by about 2^4.
+// halving of the hoop spacing must divide it by about 2^4. The error is read through the
+// recovered traction (fem_backend.h); the solver's own nodal contact forces over the
+// cylinder's area, which no recovery touches, must agree with the closed form as closely as
+// measured, and the two totals with each other.
 TEST(CylinderRefinement, QuadraticElementsConvergeAtFourthOrder) {
   const TubeSolve linear = solve_tube(1, 6);
   std::printf("degree 1, N = 12: error %.3e, spread %.2e, %.3f s\n", linear.error, linear.spread,
               linear.seconds);
+  // Measured at N = 12, 24, 48 (the printout below); each bound is 1.5 times these.
+  const double measured_nodal_error[3] = {1.147e-5, 1.539e-6, 1.131e-7};
+  const double measured_recovery_gap[3] = {6.764e-5, 5.006e-6, 3.282e-7};
+  const double measured_spread[3] = {4.80e-5, 3.21e-6, 2.05e-7};
   std::vector<double> errors;
   for (const int per_panel : {6, 12, 24}) {
+    const std::size_t level = errors.size();
     const TubeSolve s = solve_tube(2, per_panel);
     errors.push_back(s.error);
-    std::printf("degree 2, N = %d: error %.3e, traction error %.3e, spread %.2e, %.3f s | %s\n",
-                2 * per_panel, s.error, s.traction_error, s.spread, s.seconds, s.detail.c_str());
+    std::printf(
+        "degree 2, N = %d: error %.3e, traction error %.3e, nodal force error %.3e, recovery "
+        "gap %.3e, spread %.2e, %.3f s | %s\n",
+        2 * per_panel, s.error, s.traction_error, s.nodal_error, s.recovery_gap, s.spread,
+        s.seconds, s.detail.c_str());
     EXPECT_EQ(s.contact_fraction, 1.0);
-    EXPECT_LE(s.spread, 0.005);
-    EXPECT_LT(s.traction_error, 2.0 * s.error + 1e-9);
+    EXPECT_LE(s.spread, 1.5 * measured_spread[level]);
+    EXPECT_LT(s.nodal_error, 1.5 * measured_nodal_error[level]);
+    EXPECT_LT(s.recovery_gap, 1.5 * measured_recovery_gap[level]);
   }
   EXPECT_LT(errors[0], 0.05 * linear.error);
   for (std::size_t i = 1; i < errors.size(); ++i) {

@@ -1,5 +1,5 @@
 // The paper's cylinder study as the FE tests need it: a tube garment placed round a rigid
-// cylinder (axis z through the origin), with the closed forms of cylinder-theory.md.
+// cylinder (axis z through the origin), with the closed forms of cases/cylinder_theory.h.
 #pragma once
 
 #include "cases/cylinder_theory.h"

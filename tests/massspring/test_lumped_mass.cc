@@ -1,4 +1,5 @@
-// Lumped particle masses carry exactly the fabric's mass.
+// Lumped particle masses carry exactly the fabric's mass; the mean rest edge length (the
+// length scale of the stop rule and of the penalty) in closed form.
 #include "core/material.h"
 #include "core/tube_garment.h"
 #include "massspring/lumped_mass.h"
@@ -6,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
-#include <set>
 
 namespace tightfit {
 namespace {
@@ -26,21 +27,13 @@ TEST(LumpedMass, SumsToArealDensityTimesGarmentArea) {
   }
 }
 
-TEST(LumpedMass, MeanRestEdgeLengthOfARegularStrip) {
-  // One 2 x 1 rectangle of spacing 1 x 1: rows y = 0 (3 vertices) and y = 1 (shifted: x = 0,
-  // 0.5, 1.5, 2), edges: 2 + 3 along the rows, then the zipped diagonals.
-  const SimulationMesh mesh = test::panel_mesh(2.0, 1.0, MeshSpacing{1.0, 1.0});
-  std::set<std::pair<int, int>> edges;
-  double sum = 0.0;
-  for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      if (edges.insert(std::minmax(mesh.triangles[k][i], mesh.triangles[k][j])).second)
-        sum += (mesh.layout_positions_m[mesh.triangles[k][j]] -
-                mesh.layout_positions_m[mesh.triangles[k][i]])
-                   .norm();
-    }
-  EXPECT_NEAR(mean_rest_edge_length_m(mesh), sum / edges.size(), 1e-14);
+TEST(LumpedMass, MeanRestEdgeLengthOfAGridInClosedForm) {
+  // A 0.3 x 0.2 m panel of 3 x 4 cells of 0.1 x 0.05 m, each cut by one diagonal
+  // (core/rectangle_panel.h): 3 x 5 edges of 0.1 m along x, 4 x 4 of 0.05 m along y and 12
+  // diagonals of sqrt(0.1^2 + 0.05^2) m, 43 edges in all.
+  const SimulationMesh mesh = test::panel_mesh(0.3, 0.2, MeshSpacing{0.1, 0.05});
+  const double expected = (15 * 0.1 + 16 * 0.05 + 12 * std::hypot(0.1, 0.05)) / 43;
+  EXPECT_NEAR(mean_rest_edge_length_m(mesh), expected, 1e-15);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Volino's triangle element: forces are minus the gradient of the element energy, momentum is
-// conserved and rigid motions give no force (libigl-style invariants, style.md).
+// conserved and rigid motions give no force (invariants of any correct element).
 #include "massspring/triangle_elements.h"
 #include "test_meshes.h"
 
@@ -88,7 +88,7 @@ INSTANTIATE_TEST_SUITE_P(Laws, TriangleElementsForEveryLaw,
 
 TEST(TriangleElements, UniformStretchGivesTheLawsEnergyTimesTheArea) {
   // A uniform weft stretch a of the linear Biot law, nu = 0: W = Y1 (a - 1)^2 / 2 per unit
-  // rest area (cylinder-theory.md's law), independent of the mesh.
+  // rest area (the closed forms' law, docs/model.md), independent of the mesh.
   FabricParameters fabric;
   fabric.poisson_weft_warp = 0.0;
   const auto law = make_material_law("linear biot", fabric);
