@@ -97,15 +97,16 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   StepReport report;
   report.tolerance_N = newton_.tolerance_N();
   NewtonLog& log = log_ = NewtonLog{};
-  const NewtonSolver::Assembler assemble = [this](const dealii::Vector<double>& x,
-                                                  bool with_tangent) {
+  const NewtonSolver::Assembler assemble = [this, &step](const dealii::Vector<double>& x,
+                                                         bool with_tangent) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
-                       system_);
+                       step.gravity_on, system_);
   };
   const ContactRoundsResult rounds = contact_.solve(step, newton_, assemble, system_, x_, log);
   report.iterations = rounds.newton_iterations;
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  output_ = surface_output(pattern_, assembly_, *problem_.body, x_, contact_.nodes().multiplier_N);
+  output_ = surface_output(pattern_, assembly_, *problem_.body, x_, contact_.nodes().multiplier_N,
+                           step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{});
 
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.rounds.size()
@@ -178,6 +179,10 @@ std::vector<Vec3> FemBackend::node_positions(const std::vector<Vec3>& vertex_pos
   for (int node = 0; node < impl_->pattern_.n_nodes(); ++node)
     nodes[node] = impl_->pattern_.node_position(x, node);
   return nodes;
+}
+
+std::vector<Vec3> FemBackend::gravity_load_N() const {
+  return impl_->assembly_.gravity_load_N();
 }
 
 std::vector<Vec3> FemBackend::internal_force_N(const std::vector<Vec3>& positions_m) const {

@@ -65,6 +65,9 @@ class FemBackend final : public Backend {
   // The nodes' positions for the welded vertices at `vertex_positions_m`: those, then (degree
   // 2) each edge's midpoint on its chord.
   std::vector<Vec3> node_positions(const std::vector<Vec3>& vertex_positions_m) const;
+  // The garment's weight as consistent nodal loads on the nodes (as for node_positions), N:
+  // applied in the load steps with LoadStep::gravity_on (membrane_assembly.h).
+  std::vector<Vec3> gravity_load_N() const;
   // The membrane's internal force (minus the energy gradient) on each welded vertex, N. With
   // degree 2 the edge midpoints sit on the chords between the given vertices, and their own
   // forces are left out.

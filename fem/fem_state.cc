@@ -47,9 +47,15 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
 // with A_v the flat barycentric area and n_v the vertex normal the extractor computes
 // (oriented away from the body), so that p_v = -(f . n_v) / A_v = t exactly, and a uniform
 // pressure reads its value at every vertex.
+//
+// Under gravity the garment's own force is not the contact force: at each node it balances the
+// contact force and the weight f_g, so its normal load is lambda + f_g . n_body (the weight
+// lessens it where it presses, n_body . g < 0). That load is recovered as a second traction
+// t_g and the internal force becomes -(t_g A_v) n_v.
 void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
                                   const dealii::Vector<double>& x,
-                                  const std::vector<double>& multiplier_N, FemSurfaceOutput& out) {
+                                  const std::vector<double>& multiplier_N,
+                                  const std::vector<Vec3>& gravity_load_N, FemSurfaceOutput& out) {
   const SimulationMesh& mesh = pattern.mesh;
   const int n = mesh.n_vertices;
   SurfaceQuadrature quadrature;
@@ -73,11 +79,27 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
                                                grain_area_m2);
     }
   const auto& edge_ends = pattern.edge_ends;
-  std::vector<double> hat_load_N(n, 0.0);
-  for (int w = 0; w < n; ++w) hat_load_N[w] = std::max(0.0, multiplier_N[w]);
-  for (std::size_t e = 0; e < edge_ends.size(); ++e)
-    for (int w : edge_ends[e]) hat_load_N[w] += 0.5 * std::max(0.0, multiplier_N[n + e]);
-  const std::vector<double> traction = recover_traction_Pa(n, quadrature, hat_load_N);
+  // The loads against the vertex hats of nodal normal loads (a midpoint's to its edge's ends).
+  const auto hat_loads = [&](const std::vector<double>& node_load_N) {
+    std::vector<double> hat_load_N(n, 0.0);
+    for (int w = 0; w < n; ++w) hat_load_N[w] = node_load_N[w];
+    for (std::size_t e = 0; e < edge_ends.size(); ++e)
+      for (int w : edge_ends[e]) hat_load_N[w] += 0.5 * node_load_N[n + e];
+    return hat_load_N;
+  };
+  std::vector<double> contact_load_N(multiplier_N.size());
+  for (std::size_t k = 0; k < multiplier_N.size(); ++k)
+    contact_load_N[k] = std::max(0.0, multiplier_N[k]);
+  const std::vector<double> traction =
+      recover_traction_Pa(n, quadrature, hat_loads(contact_load_N));
+  std::vector<double> garment_traction = traction;
+  if (!gravity_load_N.empty()) {
+    std::vector<double> garment_load_N = contact_load_N;
+    for (int k = 0; k < pattern.n_nodes(); ++k)
+      garment_load_N[k] +=
+          gravity_load_N[k].dot(body.query(pattern.node_position(x, k)).outward_normal);
+    garment_traction = recover_traction_Pa(n, quadrature, hat_loads(garment_load_N));
+  }
 
   // A vertex touches the body where its own node or a midpoint of one of its edges does.
   std::vector<char> touching(n, 0);
@@ -101,7 +123,7 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
     const Vec3 n_v = normal[w].dot(s.outward_normal) < 0.0 ? Vec3(-normal[w]) : normal[w];
     state.in_contact[w] = 1;
     out.contact_traction_Pa[w] = traction[w];
-    state.internal_force_N[w] = -(traction[w] * area[w]) * n_v;
+    state.internal_force_N[w] = -(garment_traction[w] * area[w]) * n_v;
     state.contact_force_N[w] = traction[w] * area[w] * s.outward_normal;
   }
 }
@@ -110,13 +132,14 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
 
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
                                 const RigidBody& body, const dealii::Vector<double>& x,
-                                const std::vector<double>& multiplier_N) {
+                                const std::vector<double>& multiplier_N,
+                                const std::vector<Vec3>& gravity_load_N) {
   FemSurfaceOutput out;
   out.state.positions_m = pattern.vertex_positions(x);
   if (pattern.element_degree == 1)
     fill_from_multipliers(pattern, assembly, body, x, multiplier_N, out);
   else
-    fill_from_recovered_traction(pattern, body, x, multiplier_N, out);
+    fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, out);
   return out;
 }
 

@@ -21,8 +21,11 @@ struct FemSurfaceOutput {
   std::vector<double> contact_traction_Pa;  // per welded vertex, zero off contact
 };
 
+// `gravity_load_N`: per node, the weight the garment carries in this step (empty without
+// gravity); degree 2 needs it to tell the garment's own force from the contact force.
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
                                 const RigidBody& body, const dealii::Vector<double>& x,
-                                const std::vector<double>& multiplier_N);
+                                const std::vector<double>& multiplier_N,
+                                const std::vector<Vec3>& gravity_load_N);
 
 }  // namespace tightfit

@@ -34,10 +34,25 @@ void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<doubl
   }
 }
 
+Vec3 MembraneAssembly::weight_per_rest_area() const {
+  if (!problem_.fabric)
+    throw std::invalid_argument("fem backend: gravity needs the fabric's areal density");
+  return problem_.fabric->areal_density_kg_per_m2 * problem_.gravity_m_per_s2;
+}
+
+std::vector<Vec3> MembraneAssembly::gravity_load_N() const {
+  const Vec3 weight = weight_per_rest_area();
+  const std::vector<double> area = pattern_.node_rest_area_m2();
+  std::vector<Vec3> load(area.size());
+  for (std::size_t node = 0; node < area.size(); ++node) load[node] = area[node] * weight;
+  return load;
+}
+
 void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNodes& contact,
-                                double tangent_shift_N_per_m, bool with_tangent,
+                                double tangent_shift_N_per_m, bool with_tangent, bool gravity_on,
                                 NewtonSystem& system) const {
   const unsigned int n_local = pattern_.n_local_dofs();
+  const Vec3 weight = gravity_on ? weight_per_rest_area() : Vec3::Zero();
   if (with_tangent) system.tangent = 0;
   system.rhs = 0;
   dealii::FullMatrix<double> cell_matrix(n_local, n_local);
@@ -49,7 +64,9 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
     cell_kernel(cell, x, gradient, with_tangent ? &hessian : nullptr);
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = pattern_.node_major(i);
-      cell_rhs[i] = -gradient[a];
+      // The weight is constant: a load on the right-hand side, nothing in the tangent.
+      cell_rhs[i] = -gradient[a] + pattern_.cell_node_rest_area_m2[cell][pattern_.local_node[i]] *
+                                       weight[pattern_.local_component[i]];
       if (with_tangent)
         for (unsigned int j = 0; j < n_local; ++j)
           cell_matrix(i, j) = hessian(a, pattern_.node_major(j));

@@ -18,9 +18,19 @@ class MembraneAssembly {
 
   // system.rhs = -R(x), constrained; system.tangent = dR/dx when with_tangent. The tangent
   // of every node's contact gets `tangent_shift_N_per_m` on its diagonal (zero: nodes out of
-  // contact are skipped).
+  // contact are skipped). With gravity_on, R also loses the garment's weight (gravity_load_N).
   void assemble(const dealii::Vector<double>& x, const ContactNodes& contact,
-                double tangent_shift_N_per_m, bool with_tangent, NewtonSystem& system) const;
+                double tangent_shift_N_per_m, bool with_tangent, bool gravity_on,
+                NewtonSystem& system) const;
+
+  // The garment's weight as consistent nodal loads, per node, N:
+  //   f_k = g int N_k rho_A dA_rest,
+  // rho_A the fabric's areal density over the rest area (mass is conserved, so no current
+  // area enters) and g Problem::gravity_m_per_s2. Linear triangles: a third of each
+  // triangle's weight at each corner (the mass-spring backend's lumped masses). Quadratic
+  // triangles: nothing at the corners, a third at each edge midpoint. Throws
+  // std::invalid_argument when the problem has no fabric.
+  std::vector<Vec3> gravity_load_N() const;
 
   // The membrane's internal force (minus the energy gradient) on each welded vertex, N,
   // summed over the vertex's copies (the seam is one vertex); every rank gets all of it.
@@ -35,6 +45,9 @@ class MembraneAssembly {
   // Node-major energy gradient (and Hessian) of one cell, from the DoF values x.
   void cell_kernel(unsigned int cell, const dealii::Vector<double>& x, Eigen::VectorXd& gradient,
                    Eigen::MatrixXd* hessian) const;
+
+  // rho_A g: the weight per unit rest area, N/m^2 (zero without a fabric).
+  Vec3 weight_per_rest_area() const;
 
   const PatternMesh& pattern_;
   const Problem& problem_;

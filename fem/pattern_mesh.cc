@@ -168,13 +168,18 @@ void PatternMesh::build_cell_quadrature(const std::vector<Mat2>& to_grain_gradie
   cell_dofs.assign(n_cells, std::vector<GlobalDof>(n_local));
   cell_JxW_m2.assign(n_cells, {});
   cell_grad_grain.assign(n_cells, {});
+  cell_node_rest_area_m2.assign(n_cells, {});
   cell_owned.assign(n_cells, 0);
   cell_grain_area_ratio.assign(n_cells, 1.0);
   // Linear hats: the barycentric coordinates of the point on the reference triangle.
   hat_values.clear();
+  shape_values.clear();
   for (unsigned int q = 0; q < quadrature.size(); ++q) {
     const dealii::Point<2> p = quadrature.point(q);
     hat_values.push_back({1.0 - p[0] - p[1], p[0], p[1]});
+    shape_values.emplace_back(n_nodes_per_cell);
+    for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
+      shape_values[q][a] = fe.base_element(0).shape_value(a, p);
   }
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     const unsigned int c = cell->active_cell_index();
@@ -185,8 +190,12 @@ void PatternMesh::build_cell_quadrature(const std::vector<Mat2>& to_grain_gradie
     // grad_grain = G grad_layout with G = J^-T: grain area / layout area = |det J| = 1/|det G|.
     cell_grain_area_ratio[c] = 1.0 / std::abs(G.determinant());
     cell_grad_grain[c].resize(quadrature.size() * n_nodes_per_cell);
+    cell_node_rest_area_m2[c].assign(n_nodes_per_cell, 0.0);
     for (unsigned int q = 0; q < quadrature.size(); ++q) {
       cell_JxW_m2[c].push_back(fe_values.JxW(q));
+      for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
+        cell_node_rest_area_m2[c][a] +=
+            shape_values[q][a] * fe_values.JxW(q) * cell_grain_area_ratio[c];
       for (unsigned int i = 0; i < n_local; ++i) {
         if (local_component[i] != 0) continue;
         const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
@@ -194,6 +203,19 @@ void PatternMesh::build_cell_quadrature(const std::vector<Mat2>& to_grain_gradie
       }
     }
   }
+}
+
+std::vector<double> PatternMesh::node_rest_area_m2() const {
+  // DoF -> the node it carries or follows.
+  std::vector<int> dof_node(dof_handler.n_dofs(), -1);
+  for (int node = 0; node < n_nodes(); ++node)
+    for (const DofTriple& d : node_copies[node]) dof_node[d[0]] = node;
+  std::vector<double> area(n_nodes(), 0.0);
+  for (int c = 0; c < n_cells(); ++c)
+    for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
+      if (local_component[i] == 0)
+        area[dof_node[cell_dofs[c][i]]] += cell_node_rest_area_m2[c][local_node[i]];
+  return area;
 }
 
 Vec3 PatternMesh::vertex_position(const dealii::Vector<double>& x, int unwelded) const {

@@ -84,6 +84,16 @@ class PatternMesh {
   // quadrature points [q][v].
   std::vector<double> cell_grain_area_ratio;
   std::vector<std::vector<double>> hat_values;
+  // The element's own (scalar) shape functions at the quadrature points [q][a], a the element
+  // node of local_node.
+  std::vector<std::vector<double>> shape_values;
+
+  // Per cell and element node, int N_a dA over the cell's rest (grain) area, m^2: the node's
+  // consistent share of the cell's area (sums to the cell's rest area), which carries the
+  // fabric's weight.
+  std::vector<std::vector<double>> cell_node_rest_area_m2;
+  // The same summed over each node's cells (a seam node's copies together), m^2.
+  std::vector<double> node_rest_area_m2() const;
 
   // Mean rest edge length over the triangles' edges (an interior edge counted twice), m.
   double mean_edge_m = 0.0;
