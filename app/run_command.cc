@@ -46,6 +46,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
         },
         dir, out);
     out << "\n" << pressure_summary_table(setup, result);
+    for (const TextTable& table : result.tables) out << "\n" << table;
     out << "  results in " << dir << "/ (pressure.csv, solver.log";
     for (const std::string& f : result.files) out << ", " << f;
     out << (setup.parameters.output.write_vtu ? ", garment.pvd, body.pvd" : "") << ")\n";

@@ -109,8 +109,10 @@ void declare_garment(ParameterHandler& prm) {
 
 void declare_material(ParameterHandler& prm) {
   prm.enter_subsection("Material");
-  prm.declare_entry("Law", "linear biot",
-                    Patterns::Selection("linear biot|st venant kirchhoff|neo hookean"),
+  std::string law_names;
+  for (const std::string& name : material_law_names())
+    law_names += (law_names.empty() ? "" : "|") + name;
+  prm.declare_entry("Law", "linear biot", Patterns::Selection(law_names),
                     material_law_descriptions());
   prm.declare_entry("Stiffness weft", "130", Patterns::Double(0),
                     "Membrane stiffness E t along the weft/course (N/m; 1 N/cm = 100 N/m). "
@@ -129,6 +131,22 @@ void declare_material(ParameterHandler& prm) {
   prm.declare_entry("Neo-Hookean shear modulus", "85470.0854700855", Patterns::Double(0),
                     "Shear modulus G of the neo-hookean law (Pa). Default: 3 G t = 100 N/m, "
                     "the mean of the two stiffnesses.");
+  const FabricParameters table2;
+  prm.declare_entry("Tension curve weft", format_curve_points(table2.tension_curve_weft),
+                    Patterns::Anything(),
+                    "The tensile curves law's weft/course curve: strain:force pairs, engineering "
+                    "strain (l - l0) / l0 (-) against force per unit rest width (N/m), strictly "
+                    "increasing, through 0:0; interpolated by a monotone C1 cubic, straight "
+                    "beyond the data. Default: Table 2 (0.245 and 0.49 N/cm).");
+  prm.declare_entry("Tension curve warp", format_curve_points(table2.tension_curve_warp),
+                    Patterns::Anything(),
+                    "The tensile curves law's warp/wale curve, as Tension curve weft (N/m). "
+                    "Default: Table 2.");
+  prm.declare_entry("Poisson curve", format_curve_points(table2.poisson_curve),
+                    Patterns::Anything(),
+                    "The tensile curves law's nu12 against weft strain: strain:coefficient pairs "
+                    "(-), constant beyond the data; one pair for a constant coefficient. "
+                    "Default: Table 2 (0.3499 at the lower load, 0.2021 at the higher).");
   prm.leave_subsection();
 }
 
@@ -183,6 +201,17 @@ void declare_contact(ParameterHandler& prm) {
                     "away, so beta sets only their speed and the time step; with Mass "
                     "spring/Contact multiplier updates = 0 the penetration stays and "
                     "docs/model.md gives its effect on the pressure.");
+  prm.declare_entry("Friction coefficient", "0", Patterns::Double(0),
+                    "Coulomb friction coefficient mu between garment and body (-); 0 = "
+                    "frictionless (the paper's cylinder). Quasi-static and path dependent: each "
+                    "vertex sticks to an anchor on the body's own surface (carried as the body "
+                    "grows or morphs) until its tangential force reaches mu times its normal "
+                    "force, then slips (docs/model.md, \"Friction\").");
+  prm.declare_entry("Tangential penalty ratio", "1", Patterns::Double(1e-3),
+                    "The friction's regularisation (-): a sticking vertex is held to its anchor "
+                    "by a spring of this times the normal penalty k A0, so it creeps |f| / k_t. "
+                    "Larger is closer to exact sticking and, on the mass-spring backend, a "
+                    "smaller time step; the results do not depend on it (docs/model.md).");
   prm.leave_subsection();
 }
 
@@ -227,6 +256,13 @@ void declare_output(ParameterHandler& prm) {
   prm.declare_entry("Write VTU", "true", Patterns::Bool(),
                     "Write one VTU per load step for the garment and the body, with .pvd "
                     "time series for ParaView.");
+  prm.declare_entry("Body pressure", "true", Patterns::Bool(),
+                    "The body VTU carries the garment's pressure mapped onto the body's surface "
+                    "(pressure_Pa, pressure_mmHg, under_garment), on the body's display surface "
+                    "refined to Body edge length (docs/measurements.md).");
+  prm.declare_entry("Body edge length", "0", Patterns::Double(0),
+                    "Longest edge of the body's surface in the body VTU and the pictures, m; 0: "
+                    "half the garment's mean edge length.");
   prm.leave_subsection();
 }
 
@@ -275,6 +311,11 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   c.fabric.thickness_m = prm.get_double("Thickness");
   c.fabric.areal_density_kg_per_m2 = prm.get_double("Areal density");
   c.fabric.neo_hookean_shear_modulus_Pa = prm.get_double("Neo-Hookean shear modulus");
+  c.fabric.tension_curve_weft =
+      parse_curve_points(prm.get("Tension curve weft"), "Material/Tension curve weft");
+  c.fabric.tension_curve_warp =
+      parse_curve_points(prm.get("Tension curve warp"), "Material/Tension curve warp");
+  c.fabric.poisson_curve = parse_curve_points(prm.get("Poisson curve"), "Material/Poisson curve");
   prm.leave_subsection();
 
   prm.enter_subsection("Body");
@@ -305,6 +346,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
 
   prm.enter_subsection("Contact");
   c.penalty_factor = prm.get_double("Penalty factor");
+  c.friction_coefficient = prm.get_double("Friction coefficient");
+  c.tangential_penalty_ratio = prm.get_double("Tangential penalty ratio");
   prm.leave_subsection();
 
   prm.enter_subsection("Protocol");
@@ -322,8 +365,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
                            : area == "mixed voronoi" ? VertexAreaDefinition::mixed_voronoi
                                                      : VertexAreaDefinition::adjacent_triangles;
   c.pressure.definition = prm.get("Definition") == "contact traction"
-                             ? PressureDefinition::contact_traction
-                             : PressureDefinition::garment_force;
+                              ? PressureDefinition::contact_traction
+                              : PressureDefinition::garment_force;
   prm.leave_subsection();
 
   prm.enter_subsection("Measurements");
@@ -334,6 +377,8 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   prm.enter_subsection("Output");
   c.output.directory = prm.get("Directory");
   c.output.write_vtu = prm.get_bool("Write VTU");
+  c.output.body_pressure = prm.get_bool("Body pressure");
+  c.output.body_edge_length_m = prm.get_double("Body edge length");
   prm.leave_subsection();
 
   prm.enter_subsection("Solver");
@@ -345,6 +390,7 @@ CaseParameters parse_case_parameters(ParameterHandler& prm) {
   };
   require(c.protocol.up.norm() > 0, "Protocol/Up must not be zero");
   c.fabric.validate();
+  if (c.law == "tensile curves") TensileCurves check(c.fabric.tensile_curves());
   return c;
 }
 
@@ -422,7 +468,13 @@ CaseParameters CaseFile::parameters() const {
 
 std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
                                                   const Problem& problem) const {
-  return backend_registry().find(name).create(problem, *prm_);
+  const BackendEntry& entry = backend_registry().find(name);
+  if (problem.friction_coefficient > 0 && !entry.applies_friction)
+    throw std::invalid_argument("Contact/Friction coefficient = " +
+                                std::to_string(problem.friction_coefficient) + ": the " + name +
+                                " backend has no friction yet; set it to 0 or use Solver/Backend "
+                                "= massspring");
+  return entry.create(problem, *prm_);
 }
 
 void CaseFile::print(std::ostream& out, ParameterFormat format) const {

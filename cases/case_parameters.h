@@ -81,6 +81,11 @@ struct NamedMeasurement {
 struct OutputSettings {
   std::string directory = "output";
   bool write_vtu = true;
+  // The body VTU carries the garment's pressure on a refined copy of the body's surface
+  // (cases/body_surface_pressure.h), its edges at most body_edge_length_m (0: half the
+  // garment's mean edge length).
+  bool body_pressure = true;
+  double body_edge_length_m = 0.0;
   // False for a run that only wants the numbers back (no file at all).
   bool write_files = true;
   // This process among the MPI ranks of the run. Every rank holds the whole result: the first
@@ -104,6 +109,8 @@ struct CaseParameters {
   PlacementSettings placement;
   ConstraintSettings constraints;
   double penalty_factor = 100.0;
+  double friction_coefficient = 0.0;      // Contact/Friction coefficient, mu
+  double tangential_penalty_ratio = 1.0;  // Contact/Tangential penalty ratio, k_t / (k A0)
   ProtocolSettings protocol;
   PressureSettings pressure;
   std::vector<NamedMeasurement> measurements;
@@ -128,7 +135,8 @@ class CaseFile {
   void set(const std::string& assignment);
   // The values now held, checked; throws std::invalid_argument naming the entry at fault.
   CaseParameters parameters() const;
-  // Creates the backend called `name` from its subsection.
+  // Creates the backend called `name` from its subsection. Throws std::invalid_argument when the
+  // problem has friction and the backend does not apply it.
   std::unique_ptr<Backend> create_backend(const std::string& name, const Problem& problem) const;
   // Every entry with its documentation and default: as readable text, as a .prm file to
   // start a case from, or as JSON (with each entry's pattern: docs/parameters.md is made from it).

@@ -20,6 +20,8 @@ double axial_stretch(const std::string& law_name, EndCondition ends, const Fabri
     return b_squared > 0 ? std::sqrt(b_squared) : std::numeric_limits<double>::quiet_NaN();
   }
   if (law_name == "neo hookean") return 1.0 / std::sqrt(a);
+  if (law_name == "tensile curves")
+    return 1.0 - TensileCurves(fabric.tensile_curves()).lateral_contraction(a - 1.0);
   throw std::invalid_argument("no closed form for law '" + law_name + "'");
 }
 
@@ -45,6 +47,13 @@ double closed_form_pressure_Pa(const std::string& law_name, EndCondition ends,
     const double Gt = fabric.neo_hookean_shear_modulus_Pa * fabric.thickness_m;
     return held ? Gt * (1.0 - std::pow(a, -4.0)) / R0
                 : Gt * (std::sqrt(a) - std::pow(a, -2.5)) / R0;
+  }
+  if (law_name == "tensile curves") {
+    // Free ends: the hoop is a free weft strip, N = T1(alpha - 1) read off the curve, and the
+    // tube narrows by g(alpha - 1). Held ends: dW/de1 with the warp strain held at zero.
+    const TensileCurves curves(fabric.tensile_curves());
+    const double N = held ? curves.held_weft_tension(a - 1.0) : curves.weft_tension(a - 1.0);
+    return N / (axial_stretch(law_name, ends, fabric, a) * a * R0);
   }
   throw std::invalid_argument("no closed form for law '" + law_name + "'");
 }

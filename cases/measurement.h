@@ -4,6 +4,8 @@
 // Measurements/List.
 #pragma once
 
+#include "io/text_table.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,8 +44,14 @@ class Measurement {
   virtual void after_step(const Scenario& /*scenario*/, const StepMeasurement& /*step*/,
                           const RunFiles& /*files*/) {}
   virtual void after_run(const Scenario& /*scenario*/,
-                         const std::vector<StepMeasurement>& /*steps*/,
-                         const RunFiles& /*files*/) {}
+                         const std::vector<StepMeasurement>& /*steps*/, const RunFiles& /*files*/) {
+  }
+  // Tables shown on screen when the run ends, after the pressure summary (every step that
+  // finished is in `steps`, possibly none).
+  virtual std::vector<TextTable> summary_tables(
+      const Scenario& /*scenario*/, const std::vector<StepMeasurement>& /*steps*/) const {
+    return {};
+  }
   // The files it wrote, for the run's closing line.
   virtual std::vector<std::string> file_names() const { return {}; }
 };

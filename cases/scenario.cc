@@ -5,6 +5,10 @@
 #include "core/constrained_directions.h"
 #include "core/memory_budget.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace tightfit {
@@ -34,6 +38,46 @@ std::vector<VertexConstraint> make_constraints(const ConstraintSettings& setting
   return constraints;
 }
 
+// The placement must start the garment outside the body and near it: a vertex inside is pushed
+// out violently by the penalty (or, deep inside, through to the far side), and a garment
+// kilometres away never touches. Both are nearly always a body in the wrong units or frame.
+void check_start(const Scenario& s, const std::vector<Vec3>& x) {
+  const RigidBody& body = s.body->body();
+  const double size_m = std::sqrt(rest_area(s.mesh));
+  int deepest = -1, nearest = -1;
+  double deepest_g = 0.0, nearest_g = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < static_cast<int>(x.size()); ++v) {
+    const double g = body.query(x[v]).signed_distance_m;
+    if (g < deepest_g) deepest_g = g, deepest = v;
+    if (g < nearest_g) nearest_g = g, nearest = v;
+  }
+  const auto where = [&](int v) {
+    std::ostringstream out;
+    out << "vertex " << v << " at (" << x[v].x() << ", " << x[v].y() << ", " << x[v].z() << ") m";
+    return out.str();
+  };
+  const std::string check =
+      "; check the placement and the body's units and frame (Body/Mesh/Unit scale, Up axis, "
+      "Translation)";
+  // Round-off of a garment laid exactly on the body (a sheet at zero gap) is not a start inside.
+  if (deepest >= 0 && deepest_g < -1e-9 * std::max(1.0, size_m)) {
+    std::ostringstream message;
+    message << "Placement/Kind = " << s.parameters.placement.kind
+            << ": the garment starts inside the body (" << s.body->describe()
+            << "): " << where(deepest) << " lies " << -deepest_g << " m deep" << check;
+    throw std::invalid_argument(message.str());
+  }
+  const double far_m = 100.0 * size_m;
+  if (nearest_g > far_m) {
+    std::ostringstream message;
+    message << "Placement/Kind = " << s.parameters.placement.kind << ": the garment starts "
+            << nearest_g << " m from the body (" << s.body->describe() << "; nearest "
+            << where(nearest) << "), over 100 times its own size of " << size_m
+            << " m, and could never reach it" << check;
+    throw std::invalid_argument(message.str());
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
@@ -61,8 +105,12 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   p.body = &s.body->body();
   p.contact_stiffness_Pa_per_m = penalty_stiffness_Pa_per_m(
       parameters.penalty_factor, s.law->stiffness_scale(), s.mean_edge_length_m);
+  p.friction_coefficient = parameters.friction_coefficient;
+  p.tangential_stiffness_Pa_per_m =
+      parameters.tangential_penalty_ratio * p.contact_stiffness_Pa_per_m;
   p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body);
   p.gravity_m_per_s2 = -parameters.protocol.gravity_m_per_s2 * parameters.protocol.up.normalized();
+  check_start(s, s.initial_positions());
   return scenario;
 }
 

@@ -31,7 +31,8 @@ struct Scenario {
 };
 
 // Throws std::invalid_argument with a message naming the parameter at fault (a garment that
-// can never press on the body, an unknown vertex group, a bad value).
+// can never press on the body, an unknown vertex group, a bad value, a placement that starts
+// the garment inside the body or over a hundred garment sizes away from it).
 std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters);
 
 }  // namespace tightfit

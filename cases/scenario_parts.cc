@@ -36,6 +36,7 @@ const PartRegistry<PlacementMaker>& placement_kinds() {
     PartRegistry<PlacementMaker> r("Placement");
     r.add(tube_round_cylinder_placement_entry());
     r.add(flat_on_plane_placement_entry());
+    r.add(tube_round_axis_placement_entry());
     return r;
   }();
   return registry;
@@ -47,6 +48,10 @@ const PartRegistry<MeasurementMaker>& measurement_kinds() {
     r.add(cylinder_theory_measurement_entry());
     r.add(angular_profile_measurement_entry());
     r.add(weight_on_plane_measurement_entry());
+    r.add(air_pack_sensors_measurement_entry());
+    r.add(stamps_measurement_entry());
+    r.add(regions_measurement_entry());
+    r.add(pictures_measurement_entry());
     return r;
   }();
   return registry;

@@ -1,5 +1,6 @@
 #include "cases/scenario_run.h"
 
+#include "cases/body_surface_pressure.h"
 #include "core/interruption.h"
 #include "core/units.h"
 #include "io/csv_table.h"
@@ -167,7 +168,10 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       if (write_series) {
         char name[64];
         std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
-        write_body_vtu(path(name), scenario.body->body().display_mesh());
+        if (output.body_pressure)
+          body_pressure_vtu(body_surface_pressure(scenario, m), m.field).write(path(name));
+        else
+          write_body_vtu(path(name), scenario.body->body().display_mesh());
         body_series->add(m.alpha, name);
       }
     } catch (const std::exception& e) {
@@ -180,6 +184,8 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   for (const auto& measurement : measurements) {
     measurement->after_run(scenario, result.steps, files);
     for (const std::string& f : measurement->file_names()) result.files.push_back(f);
+    for (TextTable& t : measurement->summary_tables(scenario, result.steps))
+      result.tables.push_back(std::move(t));
   }
   result.completed = result.failure.empty();
   return result;

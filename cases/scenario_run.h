@@ -20,6 +20,7 @@ struct RunResult {
   std::vector<StepMeasurement> steps;  // the steps that finished
   std::vector<std::string> columns;    // the measurements' extra pressure.csv columns
   std::vector<std::string> files;      // the files the measurements wrote
+  std::vector<TextTable> tables;       // the measurements' tables for the screen
   bool completed = false;
   std::string failure;     // why the run stopped early, if it did
   int interrupted_by = 0;  // the signal (SIGINT, SIGTERM) that stopped it, if one did

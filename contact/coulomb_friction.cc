@@ -39,8 +39,13 @@ FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const Su
   r.force_N = -limit * s;
   r.stiffness_N_per_m =
       mu * s * dN_dx.transpose() + limit / slip * (Mat3::Identity() - s * s.transpose()) * du_dx;
-  // The anchor slides towards x until the spring holds exactly mu N: k |u_new| = mu N.
-  const Vec3 slid = x - n.dot(d) * n - (limit / k) * s;
+  // The anchor slides towards x until the spring holds exactly mu N: k |u_new| = mu N. It is
+  // placed back from x's own closest point, in the tangent plane there: a point measured from
+  // the old anchor (a + u - (mu N / k) s) lies off a curved surface by about |u|^2 kappa / 2,
+  // and after a long slip (a morphing body drags its anchors centimetres) projecting it back
+  // moved the anchor far more than mu N / k, so that the committed anchor no longer gave the
+  // force of the accepted state.
+  const Vec3 slid = at_x.closest_point_m - (limit / k) * s;
   r.anchor = body.query(slid).location;
   return r;
 }

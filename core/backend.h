@@ -37,6 +37,10 @@ struct Problem {
   const RigidBody* body = nullptr;
   // Penalty contact: pressure per unit penetration depth, Pa/m.
   double contact_stiffness_Pa_per_m = 0.0;
+  // Coulomb friction (contact/friction_anchors.h): the coefficient mu (0: frictionless) and the
+  // tangential penalty per unit rest area, Pa/m (a vertex's k_t is this times its rest area).
+  double friction_coefficient = 0.0;
+  double tangential_stiffness_Pa_per_m = 0.0;
   // Vertices held along a direction or fixed; none for a garment free on the body.
   std::vector<VertexConstraint> constraints;
   // Gravity when a load step turns it on, m/s^2.

@@ -17,6 +17,9 @@ namespace tightfit {
 struct BackendEntry {
   std::string name;
   std::string description;
+  // Whether the backend applies Coulomb friction (Problem::friction_coefficient); one that does
+  // not refuses a problem with friction rather than solving a frictionless one in its place.
+  bool applies_friction = false;
   // Declares the backend's own subsection (for example "Mass spring") in the handler.
   std::function<void(dealii::ParameterHandler&)> declare_parameters;
   // Reads that subsection and creates the backend for `problem`.

@@ -102,6 +102,16 @@ Dual<N, T> operator/(double a, const Dual<N, T>& b) {
   return Dual<N, T>(a) / b;
 }
 
+// The plain number behind a scalar (a double, or the value of a Dual of any depth): what a
+// piecewise function branches on.
+inline double scalar_value(double x) {
+  return x;
+}
+template <int N, class T>
+double scalar_value(const Dual<N, T>& x) {
+  return scalar_value(x.value);
+}
+
 template <int N, class T>
 Dual<N, T> sqrt(const Dual<N, T>& a) {
   using std::sqrt;

@@ -6,6 +6,7 @@
 // Stiffnesses are membrane stiffnesses Y = E t in N/m (the paper's "Et"; 1 N/cm = 100 N/m).
 #pragma once
 
+#include "core/tensile_curves.h"
 #include "core/types.h"
 
 #include <memory>
@@ -31,6 +32,19 @@ struct FabricParameters {
   // Shear modulus of the incompressible neo-Hookean law, Pa. Default: the small-strain match
   // 3 G t0 = mean of Y1 and Y2 = 100 N/m, so G = 100 / (3 * 0.39e-3) Pa.
   double neo_hookean_shear_modulus_Pa = 100.0 / (3.0 * 0.39e-3);
+
+  // The 'tensile curves' law (core/tensile_curves.h): force per unit rest width against
+  // engineering strain along each direction, and nu12 against weft strain. Defaults: Table 2's
+  // two loads and the origin (course = weft: 0.35 and 0.60 at 0.245 and 0.49 N/cm; wale = warp:
+  // 0.575 and 0.825), the Poisson coefficient 0.3499 at the lower load and 0.2021 at the higher.
+  std::vector<CurvePoint> tension_curve_weft = {{0.0, 0.0}, {0.35, 24.5}, {0.60, 49.0}};
+  std::vector<CurvePoint> tension_curve_warp = {{0.0, 0.0}, {0.575, 24.5}, {0.825, 49.0}};
+  std::vector<CurvePoint> poisson_curve = {{0.35, 0.3499}, {0.60, 0.2021}};
+
+  // The tensile-curve description of this fabric.
+  TensileCurveData tensile_curves() const {
+    return {tension_curve_weft, tension_curve_warp, poisson_curve, shear_stiffness_N_per_m};
+  }
 
   // nu21 from the symmetry of the compliance: nu12 * Y2 = nu21 * Y1.
   double poisson_warp_weft() const {
@@ -60,7 +74,8 @@ class MaterialLaw {
 std::vector<std::string> material_law_names();
 // One line per law for --print-parameters.
 std::string material_law_descriptions();
-// Creates the law called `name` ("linear biot", "st venant kirchhoff", "neo hookean").
+// Creates the law called `name` ("linear biot", "st venant kirchhoff", "neo hookean",
+// "tensile curves").
 // Throws std::invalid_argument listing the known names when `name` is unknown.
 std::unique_ptr<MaterialLaw> make_material_law(const std::string& name,
                                                const FabricParameters& fabric);

@@ -3,6 +3,7 @@
 #include "core/material.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -46,18 +47,25 @@ struct OrthotropicStiffness {
   double largest() const { return std::max(d11, d22); }
 };
 
-// Linear Biot: nominal stress linear in the Biot strain U - I, U = sqrt(C).
+// The Biot strain U - I, U = sqrt(C), as (e11, e22, e12).
 // In 2D, sqrt(C) = (C + s I) / t with s = sqrt(det C), t = sqrt(tr C + 2 s).
+template <class S>
+std::array<S, 3> biot_strain(const S& c11, const S& c22, const S& c12) {
+  using std::sqrt;  // plain doubles; Dual's overload is found by argument-dependent lookup
+  const S s = sqrt(c11 * c22 - c12 * c12);
+  const S t = sqrt(c11 + c22 + 2.0 * s);
+  return {(c11 + s) / t - 1.0, (c22 + s) / t - 1.0, c12 / t};
+}
+
+// Linear Biot: nominal stress linear in the Biot strain.
 class LinearBiot {
  public:
   explicit LinearBiot(const FabricParameters& f) : stiffness_(f) {}
   static const char* name() { return "linear biot"; }
   template <class S>
   S energy(const S& c11, const S& c22, const S& c12) const {
-    using std::sqrt;  // plain doubles; Dual's overload is found by argument-dependent lookup
-    const S s = sqrt(c11 * c22 - c12 * c12);
-    const S t = sqrt(c11 + c22 + 2.0 * s);
-    return stiffness_.quadratic_energy((c11 + s) / t - 1.0, (c22 + s) / t - 1.0, c12 / t);
+    const std::array<S, 3> e = biot_strain(c11, c22, c12);
+    return stiffness_.quadratic_energy(e[0], e[1], e[2]);
   }
   double stiffness_scale() const { return stiffness_.largest(); }
 
@@ -98,6 +106,23 @@ class IncompressibleNeoHookean {
   double modulus_N_per_m_;
 };
 
+// Tensile curves (core/tensile_curves.h): the energy of measured force-strain curves, on the
+// Biot strain as the linear Biot law, which it equals for straight curves.
+class TensileCurveLaw {
+ public:
+  explicit TensileCurveLaw(const FabricParameters& f) : curves_(f.tensile_curves()) {}
+  static const char* name() { return "tensile curves"; }
+  template <class S>
+  S energy(const S& c11, const S& c22, const S& c12) const {
+    const std::array<S, 3> e = biot_strain(c11, c22, c12);
+    return curves_.energy(e[0], e[1], e[2]);
+  }
+  double stiffness_scale() const { return curves_.stiffness_scale(); }
+
+ private:
+  TensileCurves curves_;
+};
+
 // Differentiates a law's energy: variables v = (C11, C22, C12) with C21 = C12, so that
 // S = (2 dW/dC11, 2 dW/dC22, dW/dC12) and D = M H M with H the Hessian in v, M = diag(2, 2, 1).
 template <class Law>
@@ -136,7 +161,8 @@ class DifferentiatedLaw final : public MaterialLaw {
 }  // namespace
 
 std::vector<std::string> material_law_names() {
-  return {LinearBiot::name(), StVenantKirchhoff::name(), IncompressibleNeoHookean::name()};
+  return {LinearBiot::name(), StVenantKirchhoff::name(), IncompressibleNeoHookean::name(),
+          TensileCurveLaw::name()};
 }
 
 std::string material_law_descriptions() {
@@ -146,7 +172,10 @@ std::string material_law_descriptions() {
       << "'st venant kirchhoff': 2nd Piola-Kirchhoff stress linear in the Green strain "
          "(orthotropic); "
       << "'neo hookean': incompressible, isotropic, shear modulus and thickness (the paper's "
-         "Eq. 8)";
+         "Eq. 8); "
+      << "'tensile curves': measured force-strain curves per direction (Tension curve weft, "
+         "Tension curve warp), a Poisson coefficient that changes with strain (Poisson curve) "
+         "and Shear stiffness; a free strip reproduces each curve";
   return out.str();
 }
 
@@ -158,6 +187,8 @@ std::unique_ptr<MaterialLaw> make_material_law(const std::string& name,
     return std::make_unique<DifferentiatedLaw<StVenantKirchhoff>>(fabric);
   if (name == IncompressibleNeoHookean::name())
     return std::make_unique<DifferentiatedLaw<IncompressibleNeoHookean>>(fabric);
+  if (name == TensileCurveLaw::name())
+    return std::make_unique<DifferentiatedLaw<TensileCurveLaw>>(fabric);
   std::string known;
   for (const auto& n : material_law_names()) known += " '" + n + "'";
   throw std::invalid_argument("Material/Law: unknown law '" + name + "'; known:" + known);

@@ -22,7 +22,7 @@ struct FemParameters {
   int element_degree = 1;
   LinearSolverKind linear_solver = LinearSolverKind::direct;
   // Krylov stopping rule: residual relative to the right-hand side; the floor of the inexact
-  // Newton forcing term (fem_backend.cc, newton()).
+  // Newton forcing term (newton_solver.cc).
   double linear_tolerance = 1e-10;
   int max_linear_iterations = 1000;
   // Newton stops when the largest residual force on a free degree of freedom is below

@@ -4,7 +4,10 @@
 // start (velocity ignored). Time integration is only the road to the static equilibrium:
 // a load step settles until the largest residual force is below a tolerance relative to the
 // garment's tension scale, then (Contact multiplier updates) updates the contact multipliers
-// and settles again until no vertex sits deeper in the body than the gap tolerance.
+// and settles again until no vertex sits deeper in the body than the gap tolerance. With
+// friction (Problem::friction_coefficient > 0) a load step is one quasi-static increment: its
+// forces take the return mapping from the anchors of the last accepted state, and the stable
+// state at the end of the step commits the new anchors (contact/friction_anchors.h).
 //
 // Placement (MassSpringParameters): "sewn tube" starts every load step from the positions
 // given by set_positions. "flat panels" starts the first load step from the paper's flat
@@ -14,6 +17,7 @@
 // the flat-panel frames in its iterations and its wall time, and names them in its detail.
 #pragma once
 
+#include "contact/friction_anchors.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
 #include "massspring/bending_hinges.h"
@@ -22,6 +26,7 @@
 #include "massspring/static_newton.h"
 #include "massspring/triangle_elements.h"
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -72,6 +77,12 @@ class MassSpringBackend final : public Backend {
   // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact
   // force (penalty_contact.h).
   double contact_penetration_m(bool update_multipliers);
+  // The contact force on particle i at x: the normal force lambda n and, with friction, the
+  // return mapping's tangential force from the step's anchors. `slipping` (if given) is set
+  // when the vertex slips.
+  Vec3 contact_force_N(std::size_t i, const Vec3& x, bool* slipping = nullptr) const;
+  // Keeps the friction anchors of the accepted state x_; returns how many vertices slip there.
+  int commit_friction_anchors();
 
   Problem problem_;
   MassSpringParameters parameters_;
@@ -91,8 +102,26 @@ class MassSpringBackend final : public Backend {
   std::vector<Vec3> x_, v_;
   // Contact multiplier estimate of each particle, N (all zero: the plain penalty).
   std::vector<double> multiplier_N_;
+  // Coulomb friction's anchors (inactive when Problem::friction_coefficient is 0).
+  FrictionAnchors friction_;
+  // The friction force on each particle at the accepted state, from the anchors the step began
+  // with (the force the state is in equilibrium with); valid once the step has committed. The
+  // committed anchors give it again only to within the projection of mu N / k_t onto the body.
+  std::vector<Vec3> accepted_friction_N_;
+  bool friction_committed_ = false;
   DampedRk4 integrator_;
   StaticNewton newton_;
+  // Implicit integrator: the stable states (and multipliers) of the last two load steps and
+  // their alphas (NaN until known; set_positions forgets them), from which each step's start
+  // is extrapolated linearly in alpha.
+  struct Settled {
+    double alpha = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Vec3> x;
+    std::vector<double> multiplier_N;
+  };
+  Settled last_, before_last_;
+  // Moves x_ and multiplier_N_ to the extrapolation of the last two stable states at `alpha`.
+  void predict(double alpha);
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
 };

@@ -10,6 +10,7 @@ namespace tightfit {
 BackendEntry massspring_backend_entry() {
   BackendEntry entry;
   entry.name = "massspring";
+  entry.applies_friction = true;
   entry.description =
       "The paper's mass-spring model (Section 2.1): lumped particles, Volino triangle "
       "elements, angular bending springs, RK4 with a quasi-static start; settings in the "

@@ -39,7 +39,8 @@ PartEntry<MeasurementMaker> angular_profile_measurement_entry() {
   PartEntry<MeasurementMaker> e;
   e.name = "angular profile";
   e.subsection = "Angular profile";
-  e.description = "pressure_theta.csv: pressure against the angle round a cylinder body, last step.";
+  e.description =
+      "pressure_theta.csv: pressure against the angle round a cylinder body, last step.";
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_integer("Angle bins", 36, 1, 3600,
                         "Sectors round the cylinder for pressure_theta.csv (-).");

@@ -31,16 +31,15 @@ void CylinderBody::check_final_alpha(double final_alpha) const {
 
 std::string CylinderBody::describe() const {
   char line[160];
-  std::snprintf(line, sizeof line, "cylinder r0 = %.2f cm, R0 = %.3f cm",
-                100 * initial_radius_m_, 100 * reference_radius_m_);
+  std::snprintf(line, sizeof line, "cylinder r0 = %.2f cm, R0 = %.3f cm", 100 * initial_radius_m_,
+                100 * reference_radius_m_);
   return line;
 }
 
 const CylinderBody& cylinder_body_of(const ScenarioBody& body, const std::string& part) {
   const auto* cylinder = dynamic_cast<const CylinderBody*>(&body);
   if (!cylinder)
-    throw std::invalid_argument(part + " needs Body/Kind = cylinder, not a " +
-                                body.body().name());
+    throw std::invalid_argument(part + " needs Body/Kind = cylinder, not a " + body.body().name());
   return *cylinder;
 }
 
@@ -71,8 +70,7 @@ PartEntry<BodyMaker> cylinder_body_entry() {
       const double circumference_m = ring_circumference_m(garment);
       const bool tube = circumference_m > 0;
       return std::make_unique<CylinderBody>(Cylinder(point, axis, radius_m, height_m),
-                                            tube ? circumference_m / (2.0 * M_PI) : radius_m,
-                                            tube);
+                                            tube ? circumference_m / (2.0 * M_PI) : radius_m, tube);
     };
   };
   return e;

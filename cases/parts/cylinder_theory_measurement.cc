@@ -105,7 +105,8 @@ class CylinderTheory final : public Measurement {
     const double g_across = (g - g.dot(axis) * axis).norm();
     const CaseParameters& c = scenario.parameters;
     const double b = axial_stretch(c.law, *ends, c.fabric, m.alpha);
-    const double w = tube_weight_per_area_Pa(c.fabric.areal_density_kg_per_m2, g_across, m.alpha, b);
+    const double w =
+        tube_weight_per_area_Pa(c.fabric.areal_density_kg_per_m2, g_across, m.alpha, b);
     return gravity_top_minus_bottom_Pa(
         w, c.pressure.definition == PressureDefinition::contact_traction);
   }

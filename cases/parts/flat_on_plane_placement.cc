@@ -1,7 +1,7 @@
 // Placement/Kind = flat on plane: the garment's layout (its panels as cut, in one plane) laid
-// flat on a plane body, centred where the plane passes nearest the origin, at a gap above it. The layout's x and y
-// go along two directions in the plane whose cross product is the plane's normal, so the
-// triangles' normals point away from the body.
+// flat on a plane body, centred where the plane passes nearest the origin, at a gap above it. The
+// layout's x and y go along two directions in the plane whose cross product is the plane's normal,
+// so the triangles' normals point away from the body.
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
 
@@ -17,7 +17,8 @@ PartEntry<PlacementMaker> flat_on_plane_placement_entry() {
   PartEntry<PlacementMaker> e;
   e.name = "flat on plane";
   e.subsection = "Flat on plane";
-  e.description = "the panels as cut, flat on the plane body, centred where it passes nearest the origin.";
+  e.description =
+      "the panels as cut, flat on the plane body, centred where it passes nearest the origin.";
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_double("Gap", 0.0, 0, 1, "Height of the garment above the plane at the start (m).");
   };

@@ -23,10 +23,15 @@ PartEntry<BodyMaker> morph_body_entry();
 // Placements (Placement/Kind).
 PartEntry<PlacementMaker> tube_round_cylinder_placement_entry();
 PartEntry<PlacementMaker> flat_on_plane_placement_entry();
+PartEntry<PlacementMaker> tube_round_axis_placement_entry();
 
 // Measurements (Measurements/List).
 PartEntry<MeasurementMaker> cylinder_theory_measurement_entry();
 PartEntry<MeasurementMaker> angular_profile_measurement_entry();
 PartEntry<MeasurementMaker> weight_on_plane_measurement_entry();
+PartEntry<MeasurementMaker> air_pack_sensors_measurement_entry();
+PartEntry<MeasurementMaker> stamps_measurement_entry();
+PartEntry<MeasurementMaker> regions_measurement_entry();
+PartEntry<MeasurementMaker> pictures_measurement_entry();
 
 }  // namespace tightfit

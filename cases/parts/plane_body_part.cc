@@ -38,7 +38,8 @@ PartEntry<BodyMaker> plane_body_entry() {
   e.description = "a rigid half-space below a plane; it does not change between load steps.";
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_vector("Point", "0,0,0", "A point on the plane (m).");
-    prm.declare_vector("Normal", "0,0,1", "Outward normal of the plane: the body lies behind it (-).");
+    prm.declare_vector("Normal", "0,0,1",
+                       "Outward normal of the plane: the body lies behind it (-).");
     prm.declare_double("Display size", 0.5, 0, ParameterTree::unbounded,
                        "Side of the square drawn in the body's VTU (m); contact is unbounded.");
   };

@@ -25,8 +25,8 @@ PartEntry<PlacementMaker> tube_round_cylinder_placement_entry() {
     return [=](const Scenario& scenario) {
       const CylinderBody& body =
           cylinder_body_of(*scenario.body, "Placement/Kind = tube round cylinder");
-      const double radius_m = std::max(body.reference_radius_m(),
-                                       (1.0 + clearance) * body.cylinder().radius_m());
+      const double radius_m =
+          std::max(body.reference_radius_m(), (1.0 + clearance) * body.cylinder().radius_m());
       return place_tube_round_cylinder(scenario.garment, scenario.mesh, body.cylinder(), radius_m);
     };
   };

@@ -69,16 +69,20 @@ TEST_P(PatternTube, TubeFromPatternFileGivesTheTubeGarmentsPressures) {
 
 TEST_P(PatternTube, CurvedSeamTubeMeetsTheClosedForm) {
   const std::vector<double> alphas = {1.2, 1.8};
-  const RunResult run = run_case(
-      "cases/patterns/tube_45T.prm",
-      {"Garment/Pattern file/File=" + source_dir + "/cases/patterns/curved_seam_tube.json"},
-      GetParam(), alphas, rest_radius_45T_m);
+  const RunResult run =
+      run_case("cases/patterns/tube_45T.prm",
+               {"Garment/Pattern file/File=" + source_dir + "/cases/patterns/curved_seam_tube.json",
+                "Garment/Pattern file/Mesh edge length=0.016"},
+               GetParam(), alphas, rest_radius_45T_m);
   ASSERT_EQ(run.steps.size(), alphas.size());
   for (const StepMeasurement& m : run.steps) {
     std::printf("%s curved seams alpha %.1f: p %.4f Pa, closed form %.4f Pa, error %+.3f%%\n",
                 GetParam(), m.alpha, m.p_mean_Pa(), m.p_theory_Pa, 100 * m.rel_error);
     EXPECT_EQ(m.summary.contact_fraction, 1.0);
-    EXPECT_LT(std::abs(m.rel_error), 0.05);
+    // Delaunay triangles of at most 16 mm (mean side 11 mm; 8 mm would take the mass-spring
+    // backend minutes): measured +0.29 / +0.74 % (mass spring) and +0.25 / +0.73 % (FEM) at
+    // alpha 1.2 / 1.8; 1 % leaves a third for the stop rules without hiding a real change.
+    EXPECT_LT(std::abs(m.rel_error), 0.01);
   }
 }
 

@@ -32,6 +32,7 @@
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
+#include "cylinder_start.h"
 
 #include <gtest/gtest.h>
 
@@ -77,11 +78,7 @@ TEST_P(VerificationMatrix, MeanPressureMatchesClosedForm) {
   if (std::string(c.ends) == "held") file.set("Constraints/Held groups=bottom, top");
   // Start on a cylinder at alpha 1.2 and grow it to 1.5 and 1.8: the three alphas checked.
   const std::vector<double> alphas = {1.2, 1.5, 1.8};
-  const double rest_radius_m = 2 * 0.157 / (2 * M_PI);
-  char initial_radius[96];
-  std::snprintf(initial_radius, sizeof initial_radius, "Body/Cylinder/Initial radius=%.17g",
-                alphas.front() * rest_radius_m);
-  file.set(initial_radius);
+  testing::start_cylinder_at(file, alphas.front(), 2 * 0.157 / (2 * M_PI));
   CaseParameters parameters = file.parameters();
   parameters.output.write_files = false;
   std::unique_ptr<Scenario> setup = make_scenario(parameters);

@@ -149,6 +149,27 @@ TEST(CoulombFrictionAnchor, GrowingCylinderCarriesTheAnchor) {
   expect_near(r.force_N, -100 * 0.06 * std::sin(dphi) * e_phi, 1e-15);
 }
 
+TEST(CoulombFrictionAnchor, LongSlipOnACurvedBodyCommitsTheForceItGave) {
+  // A vertex 60 degrees round a 5 cm cylinder from its anchor (a slip of 5.2 cm, as a morphing
+  // body can make between two load steps) slips; from the anchor it commits, the same position
+  // must give the same force, -mu N along the slip: the anchor sits mu N / k_t = 0.3 mm behind
+  // the vertex's own foot, whatever the curvature between the old anchor and the vertex. What
+  // is left is the projection of that 0.3 mm onto the curved surface, relative
+  // (0.3 mm / R)^2 / 2 = 1.8e-5 of the force (measured 1.8e-5); an anchor measured from the old
+  // one, 5 cm round, was centimetres off and turned the force.
+  const Cylinder cylinder(Vec3::Zero(), Vec3::UnitZ(), 0.05);
+  const SurfaceLocation start = cylinder.query(Vec3(0.06, 0, 0)).location;
+  const double phi = M_PI / 3;
+  const Vec3 x = (0.05 - 1e-5) * Vec3(std::cos(phi), std::sin(phi), 0) + Vec3(0, 0, 0.001);
+  const FrictionResponse slip =
+      coulomb_friction(cylinder, x, cylinder.query(x), 1.0, Vec3::Zero(), start, law(0.3, 1000));
+  ASSERT_TRUE(slip.slipping);
+  EXPECT_NEAR(slip.force_N.norm(), 0.3, 1e-12);
+  const FrictionResponse again = coulomb_friction(cylinder, x, cylinder.query(x), 1.0, Vec3::Zero(),
+                                                  slip.anchor, law(0.3, 1000));
+  expect_near(again.force_N, slip.force_N, 1e-4 * 0.3);
+}
+
 TEST(CoulombFrictionAnchor, MorphingBodyDragsTheFabric) {
   // A faceted cylinder scaled by 1.2 about the point (0, 0, -0.1): the anchor at z = 0.05 rises
   // to -0.1 + 1.2 (0.15) = 0.08. A vertex left at z = 0.05 (now inside the grown body) is

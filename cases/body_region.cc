@@ -1,0 +1,172 @@
+#include "cases/body_region.h"
+
+#include <cmath>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace tightfit {
+
+bool RegionShape::contains(const Vec3& x) const {
+  switch (kind) {
+    case Kind::slab: {
+      const double height = a.dot(x);
+      return height >= low && height <= high;
+    }
+    case Kind::box:
+      return (x.array() >= a.array()).all() && (x.array() <= b.array()).all();
+    case Kind::ball:
+      return (x - a).squaredNorm() <= low * low;
+  }
+  return false;
+}
+
+bool BodyRegion::contains(const Vec3& x) const {
+  for (const RegionShape& s : shapes)
+    if (s.contains(x)) return true;
+  return false;
+}
+
+namespace {
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\n\r");
+  if (first == std::string::npos) return "";
+  const auto last = text.find_last_not_of(" \t\n\r");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, separator)) parts.push_back(trimmed(part));
+  return parts;
+}
+
+double number(const std::string& word, const std::string& what) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(word, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != word.size() || !std::isfinite(value))
+    throw std::invalid_argument(what + " '" + word + "' is not a number");
+  return value;
+}
+
+Vec3 vector3(const std::string& word, const std::string& what) {
+  const std::vector<std::string> parts = split(word, ',');
+  if (parts.size() != 3)
+    throw std::invalid_argument(what + " '" + word + "' is not three numbers x,y,z");
+  return Vec3(number(parts[0], what), number(parts[1], what), number(parts[2], what));
+}
+
+Vec3 slab_axis(const std::string& word) {
+  if (word == "x") return Vec3::UnitX();
+  if (word == "y") return Vec3::UnitY();
+  if (word == "z") return Vec3::UnitZ();
+  const Vec3 axis = vector3(word, "the axis");
+  if (!(axis.norm() > 0)) throw std::invalid_argument("the axis '" + word + "' is zero");
+  return axis.normalized();
+}
+
+std::string format(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// One shape from its words: "slab x 0.1 0.2", "box 0,0,0 1,1,1", "ball 0,0,0 0.1".
+RegionShape parse_shape(const std::vector<std::string>& words, const std::string& text) {
+  RegionShape s;
+  s.text = text;
+  const std::string& kind = words.front();
+  const auto expect_words = [&](std::size_t n, const char* form) {
+    if (words.size() != n) throw std::invalid_argument("expected '" + std::string(form) + "'");
+  };
+  if (kind == "slab") {
+    expect_words(4, "slab AXIS LOW HIGH");
+    s.kind = RegionShape::Kind::slab;
+    s.a = slab_axis(words[1]);
+    s.low = number(words[2], "the lower height");
+    s.high = number(words[3], "the upper height");
+    if (s.low > s.high)
+      throw std::invalid_argument("the lower height " + format(s.low) +
+                                  " m is above the upper height " + format(s.high) + " m");
+    if (s.low == s.high)
+      throw std::invalid_argument("the slab is empty: both heights are " + format(s.low) + " m");
+  } else if (kind == "box") {
+    expect_words(3, "box XMIN,YMIN,ZMIN XMAX,YMAX,ZMAX");
+    s.kind = RegionShape::Kind::box;
+    s.a = vector3(words[1], "the minimum corner");
+    s.b = vector3(words[2], "the maximum corner");
+    for (int i = 0; i < 3; ++i) {
+      const std::string axis(1, "xyz"[i]);
+      if (s.a[i] > s.b[i])
+        throw std::invalid_argument("the minimum " + axis + " " + format(s.a[i]) +
+                                    " m is above the maximum " + format(s.b[i]) + " m");
+      if (s.a[i] == s.b[i])
+        throw std::invalid_argument("the box is empty: its " + axis + " extent is zero");
+    }
+  } else if (kind == "ball") {
+    expect_words(3, "ball X,Y,Z RADIUS");
+    s.kind = RegionShape::Kind::ball;
+    s.a = vector3(words[1], "the centre");
+    s.low = number(words[2], "the radius");
+    if (s.low < 0) throw std::invalid_argument("the radius " + format(s.low) + " m is negative");
+    if (s.low == 0) throw std::invalid_argument("the ball is empty: its radius is zero");
+  } else {
+    throw std::invalid_argument("unknown shape '" + kind + "' (known: slab, box, ball)");
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<BodyRegion> parse_body_regions(const std::string& definitions) {
+  // "0.1, 0, 0.5" reads as one word "0.1,0,0.5".
+  const std::string text = std::regex_replace(definitions, std::regex("\\s*,\\s*"), ",");
+  std::vector<BodyRegion> regions;
+  for (const std::string& definition : split(text, ';')) {
+    if (definition.empty()) continue;
+    const auto colon = definition.find(':');
+    if (colon == std::string::npos)
+      throw std::invalid_argument("'" + definition + "': expected 'NAME: SHAPE [+ SHAPE ...]'");
+    BodyRegion region;
+    region.name = trimmed(definition.substr(0, colon));
+    const std::string where = "region '" + region.name + "'";
+    if (region.name.empty())
+      throw std::invalid_argument("'" + definition + "': the region has no name");
+    for (const BodyRegion& other : regions)
+      if (other.name == region.name) throw std::invalid_argument(where + " is defined twice");
+    // Shapes are separated by a '+' standing alone (so 1e+3 stays a number).
+    std::istringstream words(definition.substr(colon + 1));
+    std::vector<std::vector<std::string>> shapes(1);
+    for (std::string word; words >> word;) {
+      if (word == "+")
+        shapes.emplace_back();
+      else
+        shapes.back().push_back(word);
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      std::string shape_text;
+      for (const std::string& w : shapes[i]) shape_text += (shape_text.empty() ? "" : " ") + w;
+      if (shapes[i].empty())
+        throw std::invalid_argument(where + ": shape " + std::to_string(i + 1) +
+                                    " is missing (the region is empty)");
+      try {
+        region.shapes.push_back(parse_shape(shapes[i], shape_text));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(where + ", shape '" + shape_text + "': " + e.what());
+      }
+    }
+    regions.push_back(std::move(region));
+  }
+  if (regions.empty()) throw std::invalid_argument("no region defined");
+  return regions;
+}
+
+}  // namespace tightfit

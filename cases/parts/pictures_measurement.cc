@@ -1,0 +1,118 @@
+// Measurements/List: pictures. pressure_front.png and pressure_back.png: the pressure map of the
+// last load step seen from the front and from the back (orthographic views along View direction
+// and against it), on the body's surface (cases/body_surface_pressure.h) or on the garment,
+// with a colour bar in kPa and mmHg (io/pressure_picture.h); with Every step, also one pair
+// per load step, pressure_front_NNNN.png and pressure_back_NNNN.png.
+#include "cases/body_surface_pressure.h"
+#include "cases/parts/part_entries.h"
+#include "cases/step_measurement.h"
+#include "io/pressure_picture.h"
+
+#include <cstdio>
+
+namespace tightfit {
+
+namespace {
+
+struct PictureSettings {
+  PictureView front;
+  bool on_body = true;
+  bool every_step = false;
+  PictureStyle style;
+};
+
+class PicturesMeasurement final : public Measurement {
+ public:
+  explicit PicturesMeasurement(PictureSettings settings) : settings_(std::move(settings)) {}
+
+  void after_step(const Scenario& scenario, const StepMeasurement& m,
+                  const RunFiles& files) override {
+    if (!settings_.every_step || !files.write_tables) return;
+    char suffix[32];
+    std::snprintf(suffix, sizeof suffix, "_%04d", m.step);
+    draw(scenario, m, files, suffix);
+  }
+  void after_run(const Scenario& scenario, const std::vector<StepMeasurement>& steps,
+                 const RunFiles& files) override {
+    if (!steps.empty() && files.write_tables) draw(scenario, steps.back(), files, "");
+  }
+  std::vector<std::string> file_names() const override {
+    return {"pressure_front.png", "pressure_back.png"};
+  }
+
+ private:
+  void draw(const Scenario& scenario, const StepMeasurement& m, const RunFiles& files,
+            const std::string& suffix) const {
+    PressureSurface surface;
+    if (settings_.on_body) {
+      BodySurfacePressure body = body_surface_pressure(scenario, m);
+      surface = {std::move(body.surface.vertices_m), std::move(body.surface.triangles),
+                 std::move(body.pressure_Pa), std::move(body.under_garment)};
+    } else {
+      surface = {m.state.positions_m, scenario.mesh.triangles, m.field.pressure_Pa,
+                 m.field.contact};
+    }
+    const PictureView back{-settings_.front.direction, settings_.front.up};
+    for (const auto& [side, view] : {std::pair<const char*, PictureView>{"front", settings_.front},
+                                     std::pair<const char*, PictureView>{"back", back}}) {
+      PictureStyle style = settings_.style;
+      char title[256];
+      std::snprintf(title, sizeof title, "%s, %s: %s view, load step %d (alpha %.3g)",
+                    scenario.parameters.garment.name.c_str(),
+                    settings_.on_body ? scenario.body->body().name().c_str() : "garment", side,
+                    m.step, m.alpha);
+      style.title = title;
+      write_pressure_picture(files.path(std::string("pressure_") + side + suffix + ".png"), surface,
+                             view, style);
+    }
+  }
+
+  PictureSettings settings_;
+};
+
+}  // namespace
+
+PartEntry<MeasurementMaker> pictures_measurement_entry() {
+  PartEntry<MeasurementMaker> e;
+  e.name = "pictures";
+  e.subsection = "Pictures";
+  e.description =
+      "pressure_front.png, pressure_back.png: the pressure map of the last step from the front "
+      "and the back, coloured, with a colour bar in kPa and mmHg.";
+  e.declare_parameters = [](ParameterTree& prm) {
+    prm.declare_vector("View direction", "0,1,0",
+                       "The front picture looks along this direction, the back one against it "
+                       "(orthographic views; -). The default looks at a body that stands along "
+                       "+z and faces -y, as mesh bodies are imported (docs/bodies.md).");
+    prm.declare_vector("Up", "0,0,1", "The direction shown upwards in both pictures (-).");
+    prm.declare_selection("Surface", "body", "body|garment",
+                          "Draw the pressure on the body's surface (mapped from the garment, "
+                          "grey where no garment lies) or on the garment itself.");
+    prm.declare_bool("Every step", false,
+                     "Also draw pressure_front_NNNN.png and pressure_back_NNNN.png at every load "
+                     "step.");
+    prm.declare_integer("Width", 800, 320, 8000, "Picture width (pixels).");
+    prm.declare_integer("Height", 600, 200, 8000, "Picture height (pixels).");
+    prm.declare_double("Top pressure", 0, 0, ParameterTree::unbounded,
+                       "Pressure at the top of the colour bar, Pa; 0: the largest one drawn.");
+  };
+  e.parse = [](ParameterTree& prm) -> MeasurementMaker {
+    PictureSettings s;
+    s.front.direction = prm.get_vector("View direction");
+    s.front.up = prm.get_vector("Up");
+    if (!(s.front.direction.norm() > 0))
+      throw std::invalid_argument("View direction: the direction is zero");
+    if (!(s.front.up.cross(s.front.direction).norm() >
+          1e-9 * s.front.up.norm() * s.front.direction.norm()))
+      throw std::invalid_argument("Up: zero or along View direction");
+    s.on_body = prm.get("Surface") == "body";
+    s.every_step = prm.get_bool("Every step");
+    s.style.width = prm.get_integer("Width");
+    s.style.height = prm.get_integer("Height");
+    s.style.top_pressure_Pa = prm.get_double("Top pressure");
+    return [s] { return std::make_unique<PicturesMeasurement>(s); };
+  };
+  return e;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,99 @@
+// Measurements/List: regions. regions.csv: for every named region of the case
+// (cases/body_region.h) and every load step, the contact area, the mean and peak pressure (Pa
+// and mmHg) and the normal force, as cases/region_pressure.h defines them; on screen at the end
+// of the run, the same for the last load step.
+#include "cases/csv_measurement.h"
+#include "cases/parts/part_entries.h"
+#include "cases/region_pressure.h"
+#include "cases/step_measurement.h"
+#include "core/units.h"
+
+namespace tightfit {
+
+namespace {
+
+// Why a region has no mean pressure: no garment there, or garment without contact.
+std::string note(const RegionPressure& r) {
+  if (r.n_contact_vertices > 0) return "";
+  return r.garment_area_m2 > 0 ? "no contact" : "no garment in the region";
+}
+
+class RegionsMeasurement final : public CsvMeasurement {
+ public:
+  explicit RegionsMeasurement(std::vector<BodyRegion> regions)
+      : CsvMeasurement("regions.csv", {"step", "alpha", "region", "contact_area_m2", "p_mean_Pa",
+                                       "p_peak_Pa", "p_mean_mmHg", "p_peak_mmHg", "normal_force_N",
+                                       "n_contact_vertices", "garment_area_m2", "note"}),
+        regions_(std::move(regions)) {}
+
+  std::vector<TextTable> summary_tables(const Scenario& scenario,
+                                        const std::vector<StepMeasurement>& steps) const override {
+    if (steps.empty()) return {};
+    const StepMeasurement& m = steps.back();
+    TextTable table("Pressure by region, load step " + std::to_string(m.step) + " (alpha " +
+                        format_fixed(m.alpha, 3) + "); mean over the contact area",
+                    {"region", "contact area [m2]", "p_mean [Pa]", "p_mean [mmHg]", "p_peak [Pa]",
+                     "p_peak [mmHg]", "force [N]", "note"});
+    for (const BodyRegion& region : regions_) {
+      const RegionPressure r = measure(scenario, m, region);
+      table.add_row({region.name, format_number(r.contact_area_m2, 4), format_fixed(r.mean_Pa, 2),
+                     format_fixed(units::to_mmHg(r.mean_Pa), 3), format_fixed(r.peak_Pa, 2),
+                     format_fixed(units::to_mmHg(r.peak_Pa), 3), format_number(r.normal_force_N, 4),
+                     note(r)});
+    }
+    return {table};
+  }
+
+ protected:
+  std::vector<std::vector<CsvCell>> rows(const Scenario& scenario,
+                                         const StepMeasurement& m) override {
+    std::vector<std::vector<CsvCell>> rows;
+    for (const BodyRegion& region : regions_) {
+      const RegionPressure r = measure(scenario, m, region);
+      rows.push_back({m.step, m.alpha, region.name, r.contact_area_m2, r.mean_Pa, r.peak_Pa,
+                      units::to_mmHg(r.mean_Pa), units::to_mmHg(r.peak_Pa), r.normal_force_N,
+                      r.n_contact_vertices, r.garment_area_m2, note(r)});
+    }
+    return rows;
+  }
+
+ private:
+  static RegionPressure measure(const Scenario& scenario, const StepMeasurement& m,
+                                const BodyRegion& region) {
+    return region_pressure(region, scenario.mesh.triangles, m.state.positions_m, m.field);
+  }
+
+  std::vector<BodyRegion> regions_;
+};
+
+}  // namespace
+
+PartEntry<MeasurementMaker> regions_measurement_entry() {
+  PartEntry<MeasurementMaker> e;
+  e.name = "regions";
+  e.subsection = "Regions";
+  e.description =
+      "regions.csv and a table on screen: contact area, mean and peak pressure (Pa, mmHg) and "
+      "normal force in each named region of Regions/Definitions, every load step.";
+  e.declare_parameters = [](ParameterTree& prm) {
+    prm.declare_text(
+        "Definitions", "",
+        "Named regions of space, 'NAME: SHAPE [+ SHAPE ...]; NAME: ...', each the union of its "
+        "shapes: 'slab AXIS LOW HIGH' (the points whose height along AXIS, one of x, y, z or a "
+        "direction a,b,c, lies between LOW and HIGH, m), 'box XMIN,YMIN,ZMIN XMAX,YMAX,ZMAX' "
+        "(m), 'ball X,Y,Z RADIUS' (m). A garment vertex counts by the share of its area inside "
+        "(docs/measurements.md).");
+  };
+  e.parse = [](ParameterTree& prm) -> MeasurementMaker {
+    std::vector<BodyRegion> regions;
+    try {
+      regions = parse_body_regions(prm.get("Definitions"));
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument(std::string("Definitions: ") + error.what());
+    }
+    return [regions] { return std::make_unique<RegionsMeasurement>(regions); };
+  };
+  return e;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,50 @@
+// Placement/Kind = tube round axis: the tube already sewn, as a circle of a given radius round
+// an axis (a cone's, or one through a mesh body's limb or waist), its middle at a given point.
+// The radius must clear the body all round: a tube that starts inside the body stops the case
+// (the scenario's start check, cases/scenario.h).
+#include "cases/parts/part_entries.h"
+#include "cases/scenario.h"
+#include "contact/tube_placement.h"
+
+#include <stdexcept>
+
+namespace tightfit {
+
+PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
+  PartEntry<PlacementMaker> e;
+  e.name = "tube round axis";
+  e.subsection = "Tube round axis";
+  e.description =
+      "the sewn tube as a circle of a given radius round an axis, its middle at a given point.";
+  e.declare_parameters = [](ParameterTree& prm) {
+    prm.declare_vector("Centre", "0,0,0", "Where the axis passes the middle of the tube (m).");
+    prm.declare_text("Axis", "body",
+                     "Direction of the tube's axis, three numbers x,y,z (-), or 'body' for the "
+                     "body's own axis (a cone's or a cylinder's).");
+    prm.declare_double("Radius", 0.1, 0, ParameterTree::unbounded,
+                       "Radius of the tube's circle at the start (m): larger than the body "
+                       "wherever the tube lies, so that it shrinks onto it.");
+  };
+  e.parse = [](ParameterTree& prm) -> PlacementMaker {
+    const Vec3 centre = prm.get_vector("Centre");
+    const std::string axis_text = prm.get("Axis");
+    const double radius_m = prm.get_double("Radius");
+    if (!(radius_m > 0)) throw std::invalid_argument("Radius must be positive (m)");
+    std::optional<Vec3> axis;
+    if (axis_text != "body") {
+      axis = prm.get_vector("Axis");
+      if (!(axis->norm() > 0)) throw std::invalid_argument("Axis must not be zero");
+    }
+    return [=](const Scenario& scenario) {
+      const std::optional<Vec3> direction = axis ? axis : scenario.body->axis();
+      if (!direction)
+        throw std::invalid_argument("Placement/Tube round axis/Axis = body, but the body (" +
+                                    scenario.body->describe() +
+                                    ") has no axis: give a direction x,y,z");
+      return place_tube_round_axis(scenario.garment, scenario.mesh, centre, *direction, radius_m);
+    };
+  };
+  return e;
+}
+
+}  // namespace tightfit

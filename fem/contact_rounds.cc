@@ -1,0 +1,128 @@
+#include "fem/contact_rounds.h"
+
+#include "contact/nodal_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tightfit {
+
+namespace {
+
+std::string format_residuals(const std::vector<double>& values) {
+  std::ostringstream out;
+  out.precision(2);
+  out << std::scientific;
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? " " : "") << values[i];
+  return out.str();
+}
+
+}  // namespace
+
+ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
+                             const FemParameters& parameters)
+    : pattern_(pattern), problem_(problem), parameters_(parameters) {
+  const double h = pattern.mean_edge_m;
+  const double k_Pa_per_m = parameters.penalty_factor * problem.law->stiffness_scale() / (h * h);
+  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(pattern.mesh, pattern.edge_index,
+                                                   parameters.element_degree, k_Pa_per_m);
+  nodes_.multiplier_N.assign(pattern.n_nodes(), 0.0);
+}
+
+void ContactRounds::secant_predictor(const LoadStep& step, dealii::Vector<double>& x) {
+  if (n_history_ < 2) return;
+  const double ratio = (step.alpha - history_alpha_[0]) / (history_alpha_[0] - history_alpha_[1]);
+  // Only forward steps no longer than a few of the last: further out the secant misleads.
+  if (!std::isfinite(ratio) || ratio <= 0.0 || ratio > 4.0) return;
+  x = history_x_[0];
+  x.add(ratio, history_x_[0], -ratio, history_x_[1]);
+  std::vector<double>& multiplier = nodes_.multiplier_N;
+  for (std::size_t w = 0; w < multiplier.size(); ++w)
+    multiplier[w] =
+        std::max(0.0, history_multiplier_N_[0][w] +
+                          ratio * (history_multiplier_N_[0][w] - history_multiplier_N_[1][w]));
+  // No constraints.distribute(x): the pins and held ends constrain increments, and the
+  // secant of two states that satisfy them (and the seams) satisfies them already.
+}
+
+void ContactRounds::contact_predictor(dealii::Vector<double>& x) const {
+  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+    const Vec3 p = pattern_.node_position(x, node);
+    const SurfacePoint s = problem_.body->query(p);
+    // Nodes in contact at the last step (the multiplier predicted positive) go onto the
+    // surface too: a penetration or gap left by the secant would cost kA g of residual.
+    if (s.signed_distance_m >= 0.0 && nodes_.multiplier_N[node] <= 0.0) continue;
+    Vec3 move = s.closest_point_m - p;
+    pattern_.node_constrained.remove_constrained(node, move);
+    pattern_.set_node_position(x, node, p + move);
+  }
+}
+
+int ContactRounds::update_multipliers(const dealii::Vector<double>& x) {
+  max_penetration_m_ = 0.0;
+  int n_active = 0;
+  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+    const NodalContact c =
+        nodal_contact(*problem_.body, pattern_.node_position(x, node), nodes_.multiplier_N[node],
+                      nodes_.penalty_N_per_m[node], false);
+    nodes_.multiplier_N[node] = c.multiplier_N;
+    if (c.multiplier_N > 0.0) {
+      ++n_active;
+      max_penetration_m_ = std::max(max_penetration_m_, std::abs(c.gap_m));
+    }
+  }
+  return n_active;
+}
+
+ContactRoundsResult ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
+                                         const NewtonSolver::Assembler& assemble,
+                                         NewtonSystem& system, dealii::Vector<double>& x,
+                                         NewtonLog& log) {
+  // After a fallback, the solver asked for returns once the garment presses on the body: the
+  // loose garment's tangent (singular at zero tension) is what defeats CG, and the first
+  // contact step, where the tension starts from zero, is left to the solver that got there.
+  if (had_contact_) newton.linear_solver().restore_requested();
+  secant_predictor(step, x);
+  contact_predictor(x);
+  newton.start_step();
+
+  ContactRoundsResult result;
+  bool gap_closed = false;
+  for (int round = 0; round < parameters_.max_augmented_lagrangian_iterations; ++round) {
+    const std::size_t first = log.residual_N.size();
+    result.newton_iterations += newton.solve(step, assemble, system, x, log);
+    result.rounds.push_back(format_residuals(
+        std::vector<double>(log.residual_N.begin() + first, log.residual_N.end())));
+    result.n_active = update_multipliers(x);
+    if (max_penetration_m_ <= parameters_.gap_tolerance_m) {
+      gap_closed = true;
+      break;
+    }
+  }
+  const double residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
+  if (!gap_closed)
+    throw_step_failure(step,
+                       "the contact gap did not close (largest penetration " +
+                           std::to_string(max_penetration_m_) + " m) after " +
+                           std::to_string(parameters_.max_augmented_lagrangian_iterations) +
+                           " augmented-Lagrangian updates",
+                       residual_N, newton.tolerance_N());
+  if (had_contact_ && result.n_active == 0)
+    throw_step_failure(step, "contact lost", residual_N, newton.tolerance_N());
+  had_contact_ = had_contact_ || result.n_active > 0;
+  if (result.n_active == 0) {
+    n_history_ = 0;
+  } else {
+    history_alpha_[1] = history_alpha_[0];
+    history_x_[1].swap(history_x_[0]);
+    history_multiplier_N_[1].swap(history_multiplier_N_[0]);
+    history_alpha_[0] = step.alpha;
+    history_x_[0] = x;
+    history_multiplier_N_[0] = nodes_.multiplier_N;
+    n_history_ = std::min(n_history_ + 1, 2);
+  }
+  return result;
+}
+
+}  // namespace tightfit

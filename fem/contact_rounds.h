@@ -1,0 +1,68 @@
+// The augmented-Lagrangian contact loop of a load step: Newton's method at fixed multipliers,
+// then Uzawa's update (each node's multiplier becomes the contact force just found,
+// contact/nodal_contact.h), repeated until no node in contact is deeper than the gap
+// tolerance. Before the rounds, two predictors choose the start (they change the path, never
+// the equilibrium): a secant in alpha through the last two converged steps in contact, and
+// the nodes inside the body moved onto its surface.
+#pragma once
+
+#include "fem/contact_nodes.h"
+#include "fem/newton_solver.h"
+#include "fem/pattern_mesh.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+// What the rounds of one load step did.
+struct ContactRoundsResult {
+  int newton_iterations = 0;
+  std::vector<std::string> rounds;  // each round's Newton residuals, formatted
+  int n_active = 0;                 // nodes in contact at the end
+};
+
+class ContactRounds {
+ public:
+  // Penalty k = beta Y / h^2 (Pa/m) at every node (contact_nodes.h); multipliers start at 0.
+  ContactRounds(const PatternMesh& pattern, const Problem& problem,
+                const FemParameters& parameters);
+
+  const ContactNodes& nodes() const { return nodes_; }
+  // Largest penetration of a node in contact after the last round, m.
+  double max_penetration_m() const { return max_penetration_m_; }
+  // The positions were set from outside: the secant has nothing to extrapolate from.
+  void forget_history() { n_history_ = 0; }
+
+  // Predicts the start from x, runs the rounds (Newton on `assemble` at fixed multipliers),
+  // and records the converged step for the next secant. Throws SolverError when the gap does
+  // not close in 'Max augmented Lagrangian iterations' rounds or contact is lost.
+  ContactRoundsResult solve(const LoadStep& step, NewtonSolver& newton,
+                            const NewtonSolver::Assembler& assemble, NewtonSystem& system,
+                            dealii::Vector<double>& x, NewtonLog& log);
+
+ private:
+  // Secant extrapolation in alpha of the positions and multipliers of the last two converged
+  // steps in contact (a continuation predictor: it changes the start, not the equilibrium).
+  void secant_predictor(const LoadStep& step, dealii::Vector<double>& x);
+  // Nodes the body has grown into, and those predicted in contact, start from their closest
+  // point on its surface, keeping constrained nodes on their planes.
+  void contact_predictor(dealii::Vector<double>& x) const;
+  // Uzawa's update at every node; returns the number of nodes in contact.
+  int update_multipliers(const dealii::Vector<double>& x);
+
+  const PatternMesh& pattern_;
+  const Problem& problem_;
+  FemParameters parameters_;
+  ContactNodes nodes_;
+  double max_penetration_m_ = 0.0;
+  bool had_contact_ = false;
+  // The last two converged steps in contact (alpha, DoF positions, multipliers).
+  int n_history_ = 0;
+  std::array<double, 2> history_alpha_{};
+  std::array<dealii::Vector<double>, 2> history_x_;
+  std::array<std::vector<double>, 2> history_multiplier_N_;
+};
+
+}  // namespace tightfit

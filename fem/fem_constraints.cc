@@ -1,0 +1,75 @@
+#include "fem/fem_constraints.h"
+
+#include "fem/rigid_motion_pin.h"
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <cmath>
+#include <utility>
+
+namespace tightfit {
+
+namespace {
+
+// Adds homogeneous constraints dx . d = 0 for each direction d on one vertex's three DoFs.
+// Each direction eliminates one component, chosen after removing the components the earlier
+// directions eliminated, so the constraints never form a cycle.
+void constrain_directions(const DofTriple& dofs, const std::vector<Vec3>& directions,
+                          dealii::AffineConstraints<double>& constraints) {
+  std::array<bool, 3> eliminated{false, false, false};
+  std::vector<std::pair<int, Vec3>> done;
+  for (Vec3 d : directions) {
+    for (const auto& [component, previous] : done)
+      d -= (d[component] / previous[component]) * previous;
+    int pivot = -1;
+    for (int c = 0; c < 3; ++c)
+      if (!eliminated[c] && (pivot < 0 || std::abs(d[c]) > std::abs(d[pivot]))) pivot = c;
+    if (pivot < 0 || std::abs(d[pivot]) < 1e-12) continue;  // already implied
+    eliminated[pivot] = true;
+    done.emplace_back(pivot, d);
+    if (constraints.is_constrained(dofs[pivot])) continue;
+    constraints.add_line(dofs[pivot]);
+    for (int c = 0; c < 3; ++c)
+      if (c != pivot && d[c] != 0.0) constraints.add_entry(dofs[pivot], dofs[c], -d[c] / d[pivot]);
+  }
+}
+
+}  // namespace
+
+void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
+                                  const dealii::Vector<double>& x, MPI_Comm comm,
+                                  NewtonSystem& system) {
+  dealii::AffineConstraints<double>& constraints = system.constraints;
+  constraints.clear();
+  // Seams: every copy of a node (a welded vertex, or the midpoint of a seam edge) follows
+  // the copy that carries it.
+  for (const std::vector<DofTriple>& copies : pattern.node_copies)
+    for (std::size_t k = 1; k < copies.size(); ++k)
+      for (int c = 0; c < 3; ++c) {
+        constraints.add_line(copies[k][c]);
+        constraints.add_entry(copies[k][c], copies[0][c], 1.0);
+      }
+  // Constrained nodes keep their coordinates along their constrained directions.
+  for (int node = 0; node < pattern.n_nodes(); ++node)
+    if (pattern.node_constrained.constrained(node))
+      constrain_directions(pattern.node_copies[node].front(),
+                           pattern.node_constrained.directions(node), constraints);
+  const RigidMotionPin pin =
+      rigid_motion_pin(*problem.body, pattern.vertex_positions(x), pattern.node_constrained,
+                       !problem.constraints.empty());
+  if (pin.vertex >= 0)
+    constrain_directions(pattern.vertex_dofs[pattern.master[pin.vertex]], pin.directions,
+                         constraints);
+  constraints.close();
+
+  // Every rank holds the whole (small) mesh: the pattern is built from all cells, each rank
+  // keeps its own rows.
+  dealii::DynamicSparsityPattern sparsity(pattern.dof_handler.n_dofs());
+  for (const std::vector<GlobalDof>& dofs : pattern.cell_dofs)
+    constraints.add_entries_local_to_global(dofs, sparsity, false);
+  system.tangent.reinit(pattern.owned_dofs, pattern.owned_dofs, sparsity, comm);
+  system.rhs.reinit(pattern.owned_dofs, comm);
+  system.increment.reinit(pattern.owned_dofs, comm);
+}
+
+}  // namespace tightfit

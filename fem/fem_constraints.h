@@ -1,0 +1,19 @@
+// The constraints on the Newton increments: every copy of a seam node follows the copy that
+// carries it, constrained nodes (held groups, fixed groups) keep their coordinates along their
+// directions, and one vertex is pinned against the body's free rigid motions
+// (rigid_motion_pin.h). They fix the tangent's sparsity pattern, so the system is rebuilt
+// with them.
+#pragma once
+
+#include "fem/newton_system.h"
+#include "fem/pattern_mesh.h"
+
+namespace tightfit {
+
+// Rebuilds system.constraints for the garment at DoF positions x (the pin is chosen there),
+// then the tangent's pattern and the vectors on the rank's own DoFs.
+void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
+                                  const dealii::Vector<double>& x, MPI_Comm comm,
+                                  NewtonSystem& system);
+
+}  // namespace tightfit

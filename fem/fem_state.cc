@@ -1,0 +1,123 @@
+#include "fem/fem_state.h"
+
+#include "contact/rigid_body.h"
+#include "core/mesh_geometry.h"
+#include "fem/traction_recovery.h"
+
+#include <algorithm>
+
+namespace tightfit {
+
+namespace {
+
+void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& assembly,
+                           const RigidBody& body, const dealii::Vector<double>& x,
+                           const std::vector<double>& multiplier_N, FemSurfaceOutput& out) {
+  const SimulationMesh& mesh = pattern.mesh;
+  const int n = mesh.n_vertices;
+  SurfaceState& state = out.state;
+  state.internal_force_N = assembly.internal_force_N(x);
+  state.contact_force_N.assign(n, Vec3::Zero());
+  state.in_contact.assign(n, 0);
+  state.gap_m.assign(n, 0.0);
+  const std::vector<double> area =
+      vertex_areas(mesh.triangles, state.positions_m, n, VertexAreaDefinition::barycentric);
+  out.contact_traction_Pa.assign(n, 0.0);
+  for (int w = 0; w < n; ++w) {
+    const SurfacePoint s = body.query(state.positions_m[w]);
+    state.gap_m[w] = s.signed_distance_m;
+    if (multiplier_N[w] <= 0.0) continue;
+    state.in_contact[w] = 1;
+    state.contact_force_N[w] = multiplier_N[w] * s.outward_normal;
+    if (area[w] > 0.0) out.contact_traction_Pa[w] = multiplier_N[w] / area[w];
+  }
+}
+
+// Quadratic elements carry a consistent load int N_k p dA at each node: about nothing at the
+// corners and A/3 at the midpoints under a uniform pressure, so their nodal forces over
+// vertex areas do not read a pressure. Worse, the corners' share is of either sign and
+// contact cannot pull: on a cylinder the corners float a little off the body (by about h^4)
+// and only the midpoints press. The traction is therefore recovered in the linear functions
+// on the current (curved) surface, whose loads the nodal forces determine: the hat of vertex w
+// is phi_w = N_w + 1/2 sum_e N_e over its edges e (a quadratic function), so int phi_w t dA =
+// f_w + 1/2 sum_e f_e, and the L2 projection M t = f of traction_recovery.h (M_vw = int phi_v
+// phi_w dA) returns the vertex tractions; it shares each midpoint's force between its edge's
+// ends. Each welded vertex is then handed the force the shared extractor turns back into it:
+//   internal_force_N = -(t A_v) n_v,  contact_force_N = t A_v n_body,
+// with A_v the flat barycentric area and n_v the vertex normal the extractor computes
+// (oriented away from the body), so that p_v = -(f . n_v) / A_v = t exactly, and a uniform
+// pressure reads its value at every vertex.
+void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
+                                  const dealii::Vector<double>& x,
+                                  const std::vector<double>& multiplier_N, FemSurfaceOutput& out) {
+  const SimulationMesh& mesh = pattern.mesh;
+  const int n = mesh.n_vertices;
+  SurfaceQuadrature quadrature;
+  quadrature.shape_values = pattern.hat_values;
+  for (const auto& v : pattern.cell_vertices)
+    quadrature.cell_nodes.emplace_back(v.begin(), v.end());
+  quadrature.point_area_m2.assign(pattern.n_cells(), {});
+  const unsigned int n_local = pattern.n_local_dofs();
+  const unsigned int n_element_nodes = pattern.n_element_nodes();
+  for (int cell = 0; cell < pattern.n_cells(); ++cell)
+    for (unsigned int q = 0; q < pattern.cell_JxW_m2[cell].size(); ++q) {
+      // dA = |x,1 x x,2| dA_grain, x,i the columns of F = dx/dX_grain.
+      Mat32 F = Mat32::Zero();
+      for (unsigned int i = 0; i < n_local; ++i)
+        F.row(pattern.local_component[i]) +=
+            x[pattern.cell_dofs[cell][i]] *
+            pattern.cell_grad_grain[cell][q * n_element_nodes + pattern.local_node[i]].transpose();
+      const double grain_area_m2 =
+          pattern.cell_JxW_m2[cell][q] * pattern.cell_grain_area_ratio[cell];
+      quadrature.point_area_m2[cell].push_back(Vec3(F.col(0)).cross(Vec3(F.col(1))).norm() *
+                                               grain_area_m2);
+    }
+  const auto& edge_ends = pattern.edge_ends;
+  std::vector<double> hat_load_N(n, 0.0);
+  for (int w = 0; w < n; ++w) hat_load_N[w] = std::max(0.0, multiplier_N[w]);
+  for (std::size_t e = 0; e < edge_ends.size(); ++e)
+    for (int w : edge_ends[e]) hat_load_N[w] += 0.5 * std::max(0.0, multiplier_N[n + e]);
+  const std::vector<double> traction = recover_traction_Pa(n, quadrature, hat_load_N);
+
+  // A vertex touches the body where its own node or a midpoint of one of its edges does.
+  std::vector<char> touching(n, 0);
+  for (int w = 0; w < n; ++w) touching[w] = multiplier_N[w] > 0.0;
+  for (std::size_t e = 0; e < edge_ends.size(); ++e)
+    if (multiplier_N[n + e] > 0.0) touching[edge_ends[e][0]] = touching[edge_ends[e][1]] = 1;
+
+  SurfaceState& state = out.state;
+  const std::vector<double> area =
+      vertex_areas(mesh.triangles, state.positions_m, n, VertexAreaDefinition::barycentric);
+  const std::vector<Vec3> normal = vertex_normals(mesh.triangles, state.positions_m, n);
+  state.internal_force_N.assign(n, Vec3::Zero());
+  state.contact_force_N.assign(n, Vec3::Zero());
+  state.in_contact.assign(n, 0);
+  state.gap_m.assign(n, 0.0);
+  out.contact_traction_Pa.assign(n, 0.0);
+  for (int w = 0; w < n; ++w) {
+    const SurfacePoint s = body.query(state.positions_m[w]);
+    state.gap_m[w] = s.signed_distance_m;
+    if (!touching[w]) continue;
+    const Vec3 n_v = normal[w].dot(s.outward_normal) < 0.0 ? Vec3(-normal[w]) : normal[w];
+    state.in_contact[w] = 1;
+    out.contact_traction_Pa[w] = traction[w];
+    state.internal_force_N[w] = -(traction[w] * area[w]) * n_v;
+    state.contact_force_N[w] = traction[w] * area[w] * s.outward_normal;
+  }
+}
+
+}  // namespace
+
+FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
+                                const RigidBody& body, const dealii::Vector<double>& x,
+                                const std::vector<double>& multiplier_N) {
+  FemSurfaceOutput out;
+  out.state.positions_m = pattern.vertex_positions(x);
+  if (pattern.element_degree == 1)
+    fill_from_multipliers(pattern, assembly, body, x, multiplier_N, out);
+  else
+    fill_from_recovered_traction(pattern, body, x, multiplier_N, out);
+  return out;
+}
+
+}  // namespace tightfit

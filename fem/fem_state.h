@@ -1,0 +1,28 @@
+// Post-processing of a converged step: the SurfaceState the shared pressure extractor reads
+// and the backend's own contact traction per welded vertex.
+//
+// Degree 1: the membrane's nodal forces and the contact multipliers over the vertices' current
+// barycentric areas. Degree 2: quadratic triangles carry consistent loads (about nothing at
+// the corners under a uniform pressure), so the traction is recovered on the curved surface
+// (traction_recovery.h) and handed to the extractor as forces it turns back into that traction
+// (see fem_backend.h).
+#pragma once
+
+#include "core/surface_state.h"
+#include "fem/membrane_assembly.h"
+#include "fem/pattern_mesh.h"
+
+#include <vector>
+
+namespace tightfit {
+
+struct FemSurfaceOutput {
+  SurfaceState state;
+  std::vector<double> contact_traction_Pa;  // per welded vertex, zero off contact
+};
+
+FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
+                                const RigidBody& body, const dealii::Vector<double>& x,
+                                const std::vector<double>& multiplier_N);
+
+}  // namespace tightfit

@@ -1,0 +1,149 @@
+#include "fem/membrane_assembly.h"
+
+#include "contact/nodal_contact.h"
+#include "fem/membrane_kernel.h"
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <stdexcept>
+
+namespace tightfit {
+
+MembraneAssembly::MembraneAssembly(const PatternMesh& pattern, const Problem& problem,
+                                   MPI_Comm comm)
+    : pattern_(pattern), problem_(problem), comm_(comm) {}
+
+void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<double>& x,
+                                   Eigen::VectorXd& gradient, Eigen::MatrixXd* hessian) const {
+  const unsigned int n_local = pattern_.n_local_dofs();
+  const unsigned int n_element_nodes = pattern_.n_element_nodes();
+  const std::vector<GlobalDof>& dofs = pattern_.cell_dofs[cell];
+  gradient.setZero(n_local);
+  if (hessian) hessian->setZero(n_local, n_local);
+  std::vector<Vec2> grad_grain(n_element_nodes);
+  for (unsigned int q = 0; q < pattern_.cell_JxW_m2[cell].size(); ++q) {
+    std::copy_n(pattern_.cell_grad_grain[cell].begin() + q * n_element_nodes, n_element_nodes,
+                grad_grain.begin());
+    // F = dx/dX_grain = sum_a x_a grad_N_a^T (docs/model.md: the membrane's 3x2 gradient).
+    Mat32 F = Mat32::Zero();
+    for (unsigned int i = 0; i < n_local; ++i)
+      F.row(pattern_.local_component[i]) +=
+          x[dofs[i]] * grad_grain[pattern_.local_node[i]].transpose();
+    add_membrane_point(*problem_.law, grad_grain, F, pattern_.cell_JxW_m2[cell][q], gradient,
+                       hessian);
+  }
+}
+
+void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNodes& contact,
+                                double tangent_shift_N_per_m, bool with_tangent,
+                                NewtonSystem& system) const {
+  const unsigned int n_local = pattern_.n_local_dofs();
+  if (with_tangent) system.tangent = 0;
+  system.rhs = 0;
+  dealii::FullMatrix<double> cell_matrix(n_local, n_local);
+  dealii::Vector<double> cell_rhs(n_local);
+  Eigen::VectorXd gradient;
+  Eigen::MatrixXd hessian;
+  for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
+    if (!pattern_.cell_owned[cell]) continue;
+    cell_kernel(cell, x, gradient, with_tangent ? &hessian : nullptr);
+    for (unsigned int i = 0; i < n_local; ++i) {
+      const int a = pattern_.node_major(i);
+      cell_rhs[i] = -gradient[a];
+      if (with_tangent)
+        for (unsigned int j = 0; j < n_local; ++j)
+          cell_matrix(i, j) = hessian(a, pattern_.node_major(j));
+    }
+    if (with_tangent)
+      system.constraints.distribute_local_to_global(cell_matrix, cell_rhs, pattern_.cell_dofs[cell],
+                                                    system.tangent, system.rhs);
+    else
+      system.constraints.distribute_local_to_global(cell_rhs, pattern_.cell_dofs[cell], system.rhs);
+  }
+
+  // Contact at the nodes (vertices, and midpoints for degree 2: without them the quadratic
+  // edges would sink into the body as straight chords), each on the rank that owns its DoFs.
+  dealii::FullMatrix<double> vertex_matrix(3, 3);
+  dealii::Vector<double> vertex_rhs(3);
+  std::vector<GlobalDof> vertex_dof_list(3);
+  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+    const DofTriple& d = pattern_.node_copies[node].front();
+    if (!pattern_.owned_dofs.is_element(d[0])) continue;
+    const NodalContact c =
+        nodal_contact(*problem_.body, pattern_.node_position(x, node), contact.multiplier_N[node],
+                      contact.penalty_N_per_m[node], with_tangent);
+    if (c.multiplier_N <= 0.0 && tangent_shift_N_per_m <= 0.0) continue;
+    for (int i = 0; i < 3; ++i) {
+      vertex_dof_list[i] = d[i];
+      vertex_rhs[i] = c.force_N[i];
+      for (int j = 0; j < 3; ++j)
+        vertex_matrix(i, j) = c.stiffness_N_per_m(i, j) + (i == j ? tangent_shift_N_per_m : 0.0);
+    }
+    if (with_tangent)
+      system.constraints.distribute_local_to_global(vertex_matrix, vertex_rhs, vertex_dof_list,
+                                                    system.tangent, system.rhs);
+    else
+      system.constraints.distribute_local_to_global(vertex_rhs, vertex_dof_list, system.rhs);
+  }
+  if (with_tangent) system.tangent.compress(dealii::VectorOperation::add);
+  system.rhs.compress(dealii::VectorOperation::add);
+}
+
+std::vector<Vec3> MembraneAssembly::internal_force_N(const dealii::Vector<double>& x) const {
+  dealii::Vector<double> gradient_full(pattern_.dof_handler.n_dofs());
+  Eigen::VectorXd gradient;
+  for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
+    if (!pattern_.cell_owned[cell]) continue;
+    cell_kernel(cell, x, gradient, nullptr);
+    for (unsigned int i = 0; i < pattern_.cell_dofs[cell].size(); ++i)
+      gradient_full[pattern_.cell_dofs[cell][i]] += gradient[pattern_.node_major(i)];
+  }
+  MPI_Allreduce(MPI_IN_PLACE, gradient_full.begin(), static_cast<int>(gradient_full.size()),
+                MPI_DOUBLE, MPI_SUM, comm_);
+  const SimulationMesh& mesh = pattern_.mesh;
+  std::vector<Vec3> force(mesh.n_vertices, Vec3::Zero());
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
+    force[mesh.welded_index[u]] -= pattern_.vertex_position(gradient_full, u);
+  return force;
+}
+
+void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
+                                 const ContactNodes& contact, Eigen::VectorXd& residual_N,
+                                 Eigen::MatrixXd& tangent_N_per_m) const {
+  const int n = pattern_.n_nodes();
+  if (static_cast<int>(node_positions_m.size()) != n)
+    throw std::invalid_argument("fem backend: linearise() needs one position per node");
+  dealii::Vector<double> x(pattern_.dof_handler.n_dofs());
+  // DoF -> row 3 node + c of the node it carries (every copy of a node shares its rows).
+  std::vector<int> dof_row(pattern_.dof_handler.n_dofs(), -1);
+  for (int node = 0; node < n; ++node) {
+    pattern_.set_node_position(x, node, node_positions_m[node]);
+    for (const DofTriple& d : pattern_.node_copies[node])
+      for (int c = 0; c < 3; ++c) dof_row[d[c]] = 3 * node + c;
+  }
+  residual_N.setZero(3 * n);
+  tangent_N_per_m.setZero(3 * n, 3 * n);
+  Eigen::VectorXd gradient;
+  Eigen::MatrixXd hessian;
+  const unsigned int n_local = pattern_.n_local_dofs();
+  std::vector<int> row(n_local);
+  for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
+    cell_kernel(cell, x, gradient, &hessian);
+    for (unsigned int i = 0; i < n_local; ++i) row[i] = dof_row[pattern_.cell_dofs[cell][i]];
+    for (unsigned int i = 0; i < n_local; ++i) {
+      const int a = pattern_.node_major(i);
+      residual_N[row[i]] += gradient[a];
+      for (unsigned int j = 0; j < n_local; ++j)
+        tangent_N_per_m(row[i], row[j]) += hessian(a, pattern_.node_major(j));
+    }
+  }
+  for (int node = 0; node < n; ++node) {
+    const NodalContact c =
+        nodal_contact(*problem_.body, node_positions_m[node], contact.multiplier_N[node],
+                      contact.penalty_N_per_m[node], true);
+    residual_N.segment<3>(3 * node) -= c.force_N;
+    tangent_N_per_m.block<3, 3>(3 * node, 3 * node) += c.stiffness_N_per_m;
+  }
+}
+
+}  // namespace tightfit

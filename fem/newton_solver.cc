@@ -1,0 +1,160 @@
+#include "fem/newton_solver.h"
+
+#include "core/interruption.h"
+
+#include <petscmat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tightfit {
+
+void throw_step_failure(const LoadStep& step, const std::string& what, double residual_N,
+                        double tolerance_N) {
+  std::ostringstream out;
+  out << "fem backend, load step " << step.index << " (alpha " << step.alpha << "): " << what
+      << "; residual " << residual_N << " N (tolerance " << tolerance_N << " N)";
+  throw SolverError(out.str());
+}
+
+NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
+                           double force_scale_N, double stiffness_scale_N_per_m, MPI_Comm comm)
+    : pattern_(pattern),
+      parameters_(parameters),
+      force_scale_N_(force_scale_N),
+      stiffness_scale_N_per_m_(stiffness_scale_N_per_m),
+      comm_(comm),
+      linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
+                                                         parameters.max_linear_iterations, comm)) {}
+
+void NewtonSolver::fail(const LoadStep& step, const std::string& what, double residual_N) const {
+  throw_step_failure(step, what, residual_N, tolerance_N());
+}
+
+int NewtonSolver::solve_linear_system(const LoadStep& step, NewtonSystem& system, NewtonLog& log) {
+  try {
+    const LinearSolveResult result = linear_solver_->solve(
+        system.tangent.petsc_matrix(), system.rhs, system.increment, krylov_tolerance_);
+    log.notes += result.note;
+    return result.used == LinearSolverKind::direct ? 0 : result.iterations;
+  } catch (const std::exception& e) {
+    fail(step,
+         std::string("linear solver '") + to_string(parameters_.linear_solver) +
+             "' failed: " + e.what(),
+         system.rhs.linfty_norm());
+  }
+}
+
+dealii::Vector<double> NewtonSolver::gather_increment(NewtonSystem& system) const {
+  dealii::Vector<double> full(pattern_.dof_handler.n_dofs());
+  for (const auto i : pattern_.owned_dofs) full[i] = system.increment(i);
+  MPI_Allreduce(MPI_IN_PLACE, full.begin(), static_cast<int>(full.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+  system.constraints.distribute(full);
+  return full;
+}
+
+// The trial point of a full step is assembled with its tangent: when the step is accepted (the
+// usual case near the solution) that assembly is the next iteration's, so a Newton iteration
+// costs one assembly and one solve.
+int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system,
+                        dealii::Vector<double>& x, NewtonLog& log) {
+  const double tolerance = tolerance_N();
+  const double mean_edge_m = pattern_.mean_edge_m;
+  std::vector<double>& history_N = log.residual_N;
+  assemble(x, true);
+  for (int iteration = 0;; ++iteration) {
+    const double residual_N = system.rhs.linfty_norm();
+    history_N.push_back(residual_N);
+    if (!std::isfinite(residual_N)) fail(step, "the residual is not finite", residual_N);
+    if (residual_N <= tolerance) return iteration;
+    // Collective, so that every rank stops at the same iteration whichever got the signal.
+    throw_if_interrupted(dealii::Utilities::MPI::max(interruption_signal(), comm_),
+                         "during load step " + std::to_string(step.index) + " (alpha " +
+                             std::to_string(step.alpha) + ") at Newton iteration " +
+                             std::to_string(iteration));
+    // Inexact Newton (Eisenstat and Walker's second forcing term): solve each system only as
+    // far as the residual's own decrease warrants, eta = 0.9 (|R_k| / |R_k-1|)^2 within
+    // [linear tolerance, 1e-2]; convergence stays superlinear. Where the residual fell by less
+    // than half (a near-singular tangent), loose solves only stall it: solve to the linear
+    // tolerance.
+    const double previous_N = iteration > 0 ? history_N[history_N.size() - 2] : 0.0;
+    const double ratio = iteration > 0 ? residual_N / previous_N : 0.1;
+    krylov_tolerance_ = ratio < 0.5
+                            ? std::clamp(0.9 * ratio * ratio, parameters_.linear_tolerance, 1e-2)
+                            : parameters_.linear_tolerance;
+    if (iteration >= parameters_.max_newton_iterations)
+      fail(step, "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
+           residual_N);
+    const double norm_0 = system.rhs.l2_norm();
+    // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
+    // or indefinite tangent, along which Newton's step may be huge or useless. When the line
+    // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
+    // until the line search succeeds and shrinking tenfold after each success. The residual is
+    // untouched, so the converged state is not biased.
+    dealii::Vector<double> trial(x);
+    bool tangent_current = false;
+    for (int escalation = 0;; ++escalation) {
+      // Yamashita and Fukushima's mu ~ |R|: it damps the step where the residual is large and
+      // vanishes with it, so that convergence stays quadratic, even when the tangent is
+      // singular at the solution (a tube touching the body at zero tension).
+      const double shift_N_per_m =
+          std::max(shift_N_per_m_, parameters_.residual_shift_factor * residual_N / mean_edge_m);
+      try {
+        // At escalation 0 the tangent and residual at x are assembled already; later, the
+        // tangent is assembled afresh. Either way it is shifted in place (same pattern: the
+        // factorization's analysis is kept).
+        if (escalation > 0) assemble(x, true);
+        if (escalation > 0 || shift_N_per_m > 0.0)
+          MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
+        log.krylov_iterations.push_back(solve_linear_system(step, system, log));
+      } catch (const SolverError&) {
+        // A singular tangent the residual's shift is too small to lift (a loose, stress-free
+        // garment whose midpoint nodes have no stiffness across it): shift as after a failed
+        // line search.
+        if (escalation >= 8) throw;
+        linear_solver_->reset();  // a failed factorization is not reused
+        shift_N_per_m_ =
+            shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_;
+        ++log.n_shifted_solves;
+        continue;
+      }
+      const dealii::Vector<double> increment = gather_increment(system);
+      // A step longer than half an edge leaves the region where the linearisation holds (and
+      // may carry the garment, which has no bending stiffness, into a folded state): shorten
+      // it.
+      double s = std::min(1.0, 0.5 * mean_edge_m / increment.linfty_norm());
+      bool accepted = !parameters_.line_search;
+      for (int halving = 0; parameters_.line_search; ++halving) {
+        trial = x;
+        trial.add(s, increment);
+        // Armijo's sufficient decrease (1e-4 s) of ||R||_2.
+        tangent_current = halving == 0;
+        assemble(trial, tangent_current);
+        const double norm = system.rhs.l2_norm();
+        accepted = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
+        if (accepted || halving >= parameters_.max_line_search_halvings) break;
+        s *= 0.5;
+      }
+      if (!parameters_.line_search) {
+        trial = x;
+        trial.add(s, increment);
+        tangent_current = false;
+      }
+      if (accepted) {
+        shift_N_per_m_ =
+            shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m_ ? 0.1 * shift_N_per_m_ : 0;
+        break;
+      }
+      if (escalation >= 8) break;  // take the shortest step tried; the iteration limit judges
+      shift_N_per_m_ =
+          shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_;
+      ++log.n_shifted_solves;
+    }
+    x = trial;
+    if (!tangent_current) assemble(x, true);
+  }
+}
+
+}  // namespace tightfit

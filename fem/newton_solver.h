@@ -1,0 +1,74 @@
+// Newton's method on the static equilibrium R(x) = 0 of one load step: the consistent tangent,
+// an inexact-Newton forcing term for Krylov solves, a backtracking (Armijo) line search on
+// ||R||_2, a cap on the step length and a Levenberg-Marquardt shift of the tangent where the
+// membrane is slack. The residual is never modified, so the converged state is unbiased.
+#pragma once
+
+#include "core/backend.h"
+#include "fem/fem_parameters.h"
+#include "fem/newton_system.h"
+#include "fem/pattern_mesh.h"
+#include "fem/petsc_linear_solver.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+// Throws SolverError naming the step (index, alpha), what failed and the residual.
+[[noreturn]] void throw_step_failure(const LoadStep& step, const std::string& what,
+                                     double residual_N, double tolerance_N);
+
+// What a load step's Newton solves did, for its report.
+struct NewtonLog {
+  std::vector<double> residual_N;      // largest residual component per iteration
+  std::vector<int> krylov_iterations;  // per linear solve (0 for the direct solver)
+  std::string notes;                   // linear solver switches
+  int n_shifted_solves = 0;            // tangents shifted after failed line searches
+};
+
+class NewtonSolver {
+ public:
+  // Fills system.rhs = -R(x) (constrained), and system.tangent = dR/dx when asked.
+  using Assembler = std::function<void(const dealii::Vector<double>& x, bool with_tangent)>;
+
+  // force_scale_N: Y h, the stop rule's force unit; the step is capped at half of h =
+  // pattern.mean_edge_m.
+  NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters, double force_scale_N,
+               double stiffness_scale_N_per_m, MPI_Comm comm);
+
+  double tolerance_N() const { return parameters_.residual_tolerance * force_scale_N_; }
+  // Forgets the tangent's shift of earlier steps (call at the start of a load step).
+  void start_step() { shift_N_per_m_ = 0.0; }
+  // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
+  void pattern_changed() { linear_solver_->reset(); }
+  PetscLinearSolver& linear_solver() { return *linear_solver_; }
+
+  // Iterates from x until max |R| <= tolerance_N(); returns the iterations taken. Throws
+  // SolverError (throw_step_failure) on a non-finite residual or too many iterations.
+  int solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system,
+            dealii::Vector<double>& x, NewtonLog& log);
+
+ private:
+  // Solves tangent * increment = rhs; returns the Krylov iterations (0 for direct).
+  int solve_linear_system(const LoadStep& step, NewtonSystem& system, NewtonLog& log);
+  // The increment on every DoF of every rank, constraints distributed.
+  dealii::Vector<double> gather_increment(NewtonSystem& system) const;
+  [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N) const;
+
+  const PatternMesh& pattern_;
+  FemParameters parameters_;
+  double force_scale_N_;
+  double stiffness_scale_N_per_m_;
+  MPI_Comm comm_;
+  std::unique_ptr<PetscLinearSolver> linear_solver_;
+  // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
+  // own shift, 'Residual shift factor', is added in solve()).
+  double shift_N_per_m_ = 0.0;
+  // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
+  double krylov_tolerance_ = 1e-10;
+};
+
+}  // namespace tightfit

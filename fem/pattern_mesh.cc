@@ -1,0 +1,230 @@
+#include "fem/pattern_mesh.h"
+
+#include "fem/panel_triangles.h"
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/reference_cell.h>
+#include <deal.II/grid/tria.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace tightfit {
+
+namespace {
+
+// Points per direction of the simplex Gauss rule for each element degree. Degree 1: one point
+// integrates the constant strain of a linear triangle exactly (the mass-spring element).
+// Degree 2: 7 points, exact to polynomial degree 5, so that the membrane energy (C quadratic
+// in the linear gradients, S(C) smooth) does not lose the element's h^4; the traction
+// recovery's mass matrix (products of linear hats times the area ratio) uses it too.
+unsigned int gauss_points_1d(int element_degree) {
+  if (element_degree == 1) return 1;
+  if (element_degree == 2) return 3;
+  throw std::invalid_argument("fem backend: Element degree must be 1 or 2, not " +
+                              std::to_string(element_degree));
+}
+
+}  // namespace
+
+PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm comm)
+    : mesh(*problem.mesh),
+      element_degree(degree),
+      triangulation(comm),
+      fe(dealii::FE_SimplexP<2>(degree), 3),
+      mapping(dealii::FE_SimplexP<2>(1)),
+      quadrature(gauss_points_1d(degree)),
+      dof_handler(triangulation) {
+  const std::vector<Mat2> to_grain_gradient = build_triangulation();
+  dof_handler.distribute_dofs(fe);
+  owned_dofs = dof_handler.locally_owned_dofs();
+  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
+    local_component.push_back(fe.system_to_component_index(i).first);
+    local_node.push_back(fe.system_to_component_index(i).second);
+  }
+  vertex_dofs.assign(mesh.n_unwelded_vertices(), DofTriple{});
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
+  master.assign(mesh.n_vertices, -1);
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
+    if (master[mesh.welded_index[u]] < 0) master[mesh.welded_index[u]] = u;
+  build_nodes();
+  node_constrained = ConstrainedDirections(problem.constraints, mesh.n_vertices);
+  // An edge midpoint is constrained along what both its ends are.
+  for (const auto& ends : edge_ends) node_constrained.add_shared(ends[0], ends[1]);
+  build_cell_quadrature(to_grain_gradient);
+
+  double edge_sum = 0.0;
+  for (const auto& r : mesh.rest_triangles)
+    edge_sum += (r[1] - r[0]).norm() + (r[2] - r[1]).norm() + (r[0] - r[2]).norm();
+  mean_edge_m = edge_sum / (3.0 * mesh.rest_triangles.size());
+}
+
+std::vector<Mat2> PatternMesh::build_triangulation() {
+  const std::vector<Triangle> panel_triangles = unwelded_triangles(mesh);
+  std::vector<dealii::Point<2>> vertices;
+  for (const Vec2& x : mesh.layout_positions_m) vertices.emplace_back(x.x(), x.y());
+  std::vector<dealii::CellData<2>> cells(panel_triangles.size(), dealii::CellData<2>(3));
+  std::map<std::array<int, 3>, int> triangle_of_corners;
+  for (std::size_t t = 0; t < panel_triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) cells[t].vertices[k] = panel_triangles[t][k];
+    cells[t].material_id = mesh.triangle_panel[t];
+    std::array<int, 3> key = panel_triangles[t];
+    std::sort(key.begin(), key.end());
+    triangle_of_corners[key] = static_cast<int>(t);
+  }
+  triangulation.create_triangulation(vertices, cells, dealii::SubCellData());
+
+  // Per cell, the affine map from layout to grain coordinates, J = dX_grain / dX_layout, read
+  // off the rest triangle; shape gradients then transform as grad_grain = J^-T grad_layout.
+  std::vector<Mat2> to_grain_gradient(triangulation.n_active_cells(), Mat2::Identity());
+  for (const auto& cell : triangulation.active_cell_iterators()) {
+    std::array<int, 3> key;
+    for (int v = 0; v < 3; ++v) key[v] = cell->vertex_index(v);
+    std::array<int, 3> sorted = key;
+    std::sort(sorted.begin(), sorted.end());
+    const int t = triangle_of_corners.at(sorted);
+    std::array<Vec2, 3> grain, layout;
+    for (int v = 0; v < 3; ++v) {
+      const int k =
+          static_cast<int>(std::find(panel_triangles[t].begin(), panel_triangles[t].end(), key[v]) -
+                           panel_triangles[t].begin());
+      grain[v] = mesh.rest_triangles[t][k];
+      layout[v] = mesh.layout_positions_m[key[v]];
+    }
+    Mat2 dg, dl;
+    dg << grain[1] - grain[0], grain[2] - grain[0];
+    dl << layout[1] - layout[0], layout[2] - layout[0];
+    const Mat2 J = dg * dl.inverse();
+    to_grain_gradient[cell->active_cell_index()] = J.inverse().transpose();
+  }
+  return to_grain_gradient;
+}
+
+void PatternMesh::build_nodes() {
+  node_copies.assign(mesh.n_vertices, {});
+  for (int w = 0; w < mesh.n_vertices; ++w) node_copies[w].push_back(vertex_dofs[master[w]]);
+  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
+    if (master[mesh.welded_index[u]] != u)
+      node_copies[mesh.welded_index[u]].push_back(vertex_dofs[u]);
+
+  // Each element node's cell corners, from the barycentric coordinates of its support point
+  // on the reference triangle (corners (0,0), (1,0), (0,1)): one corner for a vertex node,
+  // two for an edge midpoint.
+  const dealii::FiniteElement<2>& base = fe.base_element(0);
+  const unsigned int n_element_nodes = base.n_dofs_per_cell();
+  std::vector<std::vector<unsigned int>> corners(n_element_nodes);
+  for (unsigned int a = 0; a < n_element_nodes; ++a) {
+    const dealii::Point<2> p = base.get_unit_support_points()[a];
+    const std::array<double, 3> barycentric{1.0 - p[0] - p[1], p[0], p[1]};
+    for (unsigned int v = 0; v < 3; ++v)
+      if (barycentric[v] > 1e-12) corners[a].push_back(v);
+    if (corners[a].size() > 2)
+      throw std::logic_error("fem backend: an element node inside the cell is not supported");
+  }
+
+  // A midpoint's copies are the distinct DoF triples of the panel edges over one welded edge:
+  // the same edge seen from its two cells in one panel shares its DoFs; a seam edge has a copy
+  // in each panel.
+  const unsigned int n_local = fe.n_dofs_per_cell();
+  std::vector<GlobalDof> dofs(n_local);
+  std::vector<DofTriple> triples(n_element_nodes);
+  std::vector<std::vector<DofTriple>> midpoint_copies;
+  cell_vertices.assign(triangulation.n_active_cells(), {});
+  for (const auto& cell : dof_handler.active_cell_iterators()) {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n_local; ++i) triples[local_node[i]][local_component[i]] = dofs[i];
+    for (unsigned int v = 0; v < 3; ++v)
+      cell_vertices[cell->active_cell_index()][v] = mesh.welded_index[cell->vertex_index(v)];
+    for (unsigned int a = 0; a < n_element_nodes; ++a) {
+      if (corners[a].size() == 1) continue;
+      std::array<int, 2> ends{};
+      for (std::size_t k = 0; k < 2; ++k)
+        ends[k] = mesh.welded_index[cell->vertex_index(corners[a][k])];
+      std::sort(ends.begin(), ends.end());
+      const auto [it, inserted] = edge_index.emplace(ends, static_cast<int>(edge_ends.size()));
+      if (inserted) {
+        edge_ends.push_back(ends);
+        midpoint_copies.emplace_back();
+      }
+      std::vector<DofTriple>& copies = midpoint_copies[it->second];
+      if (std::find(copies.begin(), copies.end(), triples[a]) == copies.end())
+        copies.push_back(triples[a]);
+    }
+  }
+  for (auto& copies : midpoint_copies) node_copies.push_back(std::move(copies));
+}
+
+void PatternMesh::build_cell_quadrature(const std::vector<Mat2>& to_grain_gradient) {
+  dealii::FEValues<2> fe_values(mapping, fe, quadrature,
+                                dealii::update_gradients | dealii::update_JxW_values);
+  const unsigned int n_cells = triangulation.n_active_cells();
+  const unsigned int n_local = fe.n_dofs_per_cell();
+  const unsigned int n_nodes_per_cell = n_local / 3;
+  cell_dofs.assign(n_cells, std::vector<GlobalDof>(n_local));
+  cell_JxW_m2.assign(n_cells, {});
+  cell_grad_grain.assign(n_cells, {});
+  cell_owned.assign(n_cells, 0);
+  cell_grain_area_ratio.assign(n_cells, 1.0);
+  // Linear hats: the barycentric coordinates of the point on the reference triangle.
+  hat_values.clear();
+  for (unsigned int q = 0; q < quadrature.size(); ++q) {
+    const dealii::Point<2> p = quadrature.point(q);
+    hat_values.push_back({1.0 - p[0] - p[1], p[0], p[1]});
+  }
+  for (const auto& cell : dof_handler.active_cell_iterators()) {
+    const unsigned int c = cell->active_cell_index();
+    fe_values.reinit(cell);
+    cell->get_dof_indices(cell_dofs[c]);
+    cell_owned[c] = cell->is_locally_owned();
+    const Mat2& G = to_grain_gradient[c];
+    // grad_grain = G grad_layout with G = J^-T: grain area / layout area = |det J| = 1/|det G|.
+    cell_grain_area_ratio[c] = 1.0 / std::abs(G.determinant());
+    cell_grad_grain[c].resize(quadrature.size() * n_nodes_per_cell);
+    for (unsigned int q = 0; q < quadrature.size(); ++q) {
+      cell_JxW_m2[c].push_back(fe_values.JxW(q));
+      for (unsigned int i = 0; i < n_local; ++i) {
+        if (local_component[i] != 0) continue;
+        const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
+        cell_grad_grain[c][q * n_nodes_per_cell + local_node[i]] = G * Vec2(g[0], g[1]);
+      }
+    }
+  }
+}
+
+Vec3 PatternMesh::vertex_position(const dealii::Vector<double>& x, int unwelded) const {
+  const DofTriple& d = vertex_dofs[unwelded];
+  return Vec3(x[d[0]], x[d[1]], x[d[2]]);
+}
+
+Vec3 PatternMesh::node_position(const dealii::Vector<double>& x, int node) const {
+  const DofTriple& d = node_copies[node].front();
+  return Vec3(x[d[0]], x[d[1]], x[d[2]]);
+}
+
+void PatternMesh::set_node_position(dealii::Vector<double>& x, int node, const Vec3& p) const {
+  for (const DofTriple& d : node_copies[node])
+    for (int c = 0; c < 3; ++c) x[d[c]] = p[c];
+}
+
+dealii::Vector<double> PatternMesh::dof_positions(const std::vector<Vec3>& positions_m) const {
+  dealii::Vector<double> x(dof_handler.n_dofs());
+  for (int w = 0; w < mesh.n_vertices; ++w) set_node_position(x, w, positions_m[w]);
+  // Midpoints start on their chords; the contact predictor lifts those inside the body.
+  for (std::size_t e = 0; e < edge_ends.size(); ++e)
+    set_node_position(x, mesh.n_vertices + static_cast<int>(e),
+                      0.5 * (positions_m[edge_ends[e][0]] + positions_m[edge_ends[e][1]]));
+  return x;
+}
+
+std::vector<Vec3> PatternMesh::vertex_positions(const dealii::Vector<double>& x) const {
+  std::vector<Vec3> positions(mesh.n_vertices);
+  for (int w = 0; w < mesh.n_vertices; ++w) positions[w] = vertex_position(x, master[w]);
+  return positions;
+}
+
+}  // namespace tightfit

@@ -1,0 +1,98 @@
+// The garment's pattern as the finite-element reference domain: the panels' triangles laid out
+// flat (one deal.II cell each, a seam being two edges), the vector-valued position field's
+// degrees of freedom, the contact nodes and their copies across seams, and everything of the
+// reference configuration that assembly reads at every Newton iteration (per cell: DoFs,
+// quadrature weights, shape gradients in grain axes). Built once; read-only afterwards.
+//
+// Nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
+// n_vertices + e. A node has one DoF triple per panel it lies in: the first carries it, the
+// others follow it (seam constraints, fem_constraints.h).
+#pragma once
+
+#include "core/backend.h"
+#include "core/constrained_directions.h"
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace tightfit {
+
+using GlobalDof = dealii::types::global_dof_index;
+using DofTriple = std::array<GlobalDof, 3>;
+
+class PatternMesh {
+ public:
+  // Distributes the cells over `comm`; throws std::invalid_argument for a degree other than
+  // 1 or 2.
+  PatternMesh(const Problem& problem, int element_degree, MPI_Comm comm);
+
+  int n_nodes() const { return static_cast<int>(node_copies.size()); }
+  int n_vertices() const { return mesh.n_vertices; }
+  int n_cells() const { return static_cast<int>(cell_dofs.size()); }
+  int n_local_dofs() const { return static_cast<int>(fe.n_dofs_per_cell()); }
+  int n_element_nodes() const { return n_local_dofs() / 3; }
+  // Node-major index 3 a + c of a cell's local DoF i (node a, component c).
+  int node_major(unsigned int i) const { return 3 * local_node[i] + local_component[i]; }
+
+  Vec3 vertex_position(const dealii::Vector<double>& x, int unwelded) const;
+  Vec3 node_position(const dealii::Vector<double>& x, int node) const;
+  // Writes p into every copy of the node (seams keep copies equal).
+  void set_node_position(dealii::Vector<double>& x, int node, const Vec3& p) const;
+  // The DoF vector of welded vertices at `positions_m`, each edge midpoint on its chord.
+  dealii::Vector<double> dof_positions(const std::vector<Vec3>& positions_m) const;
+  // The welded vertices' positions in x.
+  std::vector<Vec3> vertex_positions(const dealii::Vector<double>& x) const;
+
+  const SimulationMesh& mesh;
+  int element_degree;
+  dealii::parallel::shared::Triangulation<2> triangulation;
+  dealii::FESystem<2> fe;
+  dealii::MappingFE<2> mapping;
+  dealii::QGaussSimplex<2> quadrature;
+  dealii::DoFHandler<2> dof_handler;
+  dealii::IndexSet owned_dofs;
+  // Local DoF i of a cell is component local_component[i] of element node local_node[i].
+  std::vector<int> local_component, local_node;
+
+  std::vector<DofTriple> vertex_dofs;  // unwelded vertex -> its three DoFs
+  std::vector<int> master;             // welded vertex -> the unwelded copy that carries it
+  // Per node, the DoFs of each copy; the first carries it.
+  std::vector<std::vector<DofTriple>> node_copies;
+  std::vector<std::array<int, 2>> edge_ends;      // welded edge -> its two welded vertices
+  std::map<std::array<int, 2>, int> edge_index;   // sorted welded vertex pair -> welded edge
+  ConstrainedDirections node_constrained;         // the Problem's constraints at every node
+  std::vector<std::array<int, 3>> cell_vertices;  // per cell, its corners' welded vertices
+
+  // Per active cell (by active_cell_index): its DoFs, whether this rank owns it, and per
+  // quadrature point its JxW (layout area, m^2) and each element node's shape gradient in
+  // grain axes (1/m), node-major [q * n_element_nodes + a]. They live on the reference
+  // (pattern) configuration, so they are computed once.
+  std::vector<std::vector<GlobalDof>> cell_dofs;
+  std::vector<char> cell_owned;
+  std::vector<std::vector<double>> cell_JxW_m2;
+  std::vector<std::vector<Vec2>> cell_grad_grain;
+  // Per cell, the ratio of grain to layout area; the linear hat of each cell corner at the
+  // quadrature points [q][v].
+  std::vector<double> cell_grain_area_ratio;
+  std::vector<std::vector<double>> hat_values;
+
+  // Mean rest edge length over the triangles' edges (an interior edge counted twice), m.
+  double mean_edge_m = 0.0;
+
+ private:
+  // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.
+  std::vector<Mat2> build_triangulation();
+  void build_nodes();
+  void build_cell_quadrature(const std::vector<Mat2>& to_grain_gradient);
+};
+
+}  // namespace tightfit
