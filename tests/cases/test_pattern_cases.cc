@@ -2,7 +2,7 @@
 // "4 5T" read from a GarmentCode file, gives cases/cylinder_45T.prm's pressures on both
 // backends; a tube whose side seams are equal circular arcs (cases/patterns/
 // curved_seam_tube.json: each panel 18.78 cm wide at every height, so the sewn tube is the same
-// flat cylinder of rest circumference 37.56 cm) meets the closed form of cylinder-theory.md.
+// flat cylinder of rest circumference 37.56 cm) meets the closed form (docs/model.md, "Closed forms").
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
