@@ -1,5 +1,6 @@
 #include "pattern/pattern_garment.h"
 
+#include "core/memory_budget.h"
 #include "core/tube_garment.h"
 #include "pattern/edge_division.h"
 #include "pattern/polygon_mesher.h"
@@ -198,12 +199,39 @@ void lay_out(Garment& garment) {
   }
 }
 
+// Refuses, before any outline is divided, a pattern whose mesh at `edge_length_m` would not fit
+// in memory: each panel's outline polygon (16 points a segment) gives its area A and perimeter
+// L, and a mesh of near-equilateral triangles of side h holds about 2 A / (sqrt(3) h^2) + L / h
+// vertices.
+void require_mesh_fits(const Pattern& cut, double edge_length_m) {
+  const double h = edge_length_m;
+  double n_vertices = 0.0;
+  for (const PanelOutline& panel : cut.panels) {
+    std::vector<Vec2> polygon;
+    for (const Edge& edge : panel.edges)
+      for (const Segment& segment : edge.segments)
+        for (int k = 0; k < 16; ++k) polygon.push_back(point_at(segment, k / 16.0));
+    double twice_area = 0.0, perimeter = 0.0;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2& a = polygon[i];
+      const Vec2& b = polygon[(i + 1) % polygon.size()];
+      twice_area += a.x() * b.y() - b.x() * a.y();
+      perimeter += (b - a).norm();
+    }
+    n_vertices += std::abs(twice_area) / (std::sqrt(3.0) * h * h) + perimeter / h;
+  }
+  require_memory(
+      "pattern '" + cut.name + "' meshed at edge length " + std::to_string(h) + " m: a run",
+      n_vertices, "vertices", run_bytes_per_garment_vertex);
+}
+
 }  // namespace
 
 Garment pattern_garment(const Pattern& pattern, const PatternMeshOptions& options) {
   if (!(options.edge_length_m > 0)) throw PatternError("the mesh edge length must be positive (m)");
   validate(pattern);
   const Pattern cut = cut_pieces(pattern);
+  require_mesh_fits(cut, options.edge_length_m);
   EdgeDivision division(cut, options.edge_length_m);
   const auto grids = grid_panels(cut, division.seams(), options.rectangle_grid);
   const std::vector<PolygonMesh> meshes = conforming_meshes(division, grids, options);
