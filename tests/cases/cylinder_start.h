@@ -3,8 +3,14 @@
 #pragma once
 
 #include "cases/case_parameters.h"
+#include "cases/scenario.h"
+#include "cases/scenario_run.h"
 
 #include <cstdio>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
 
 namespace tightfit::testing {
 
@@ -14,6 +20,21 @@ inline void start_cylinder_at(CaseFile& file, double alpha, double rest_radius_m
   std::snprintf(initial_radius, sizeof initial_radius, "Body/Cylinder/Initial radius=%.17g",
                 alpha * rest_radius_m);
   file.set(initial_radius);
+}
+
+// Runs the case of `file` on `backend` at `alphas` only, the tube starting on the cylinder at
+// the first of them, writing no files; the run's progress goes to `log`.
+inline RunResult run_on_cylinder(CaseFile& file, const std::string& backend,
+                                 const std::vector<double>& alphas, double rest_radius_m,
+                                 std::ostream& log) {
+  start_cylinder_at(file, alphas.front(), rest_radius_m);
+  CaseParameters parameters = file.parameters();
+  parameters.output.write_files = false;
+  std::unique_ptr<Scenario> setup = make_scenario(parameters);
+  setup->alphas = alphas;
+  return run_scenario(
+      *setup, [&](const Problem& problem) { return file.create_backend(backend, problem); }, "",
+      log);
 }
 
 }  // namespace tightfit::testing

@@ -7,6 +7,7 @@
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
+#include "cylinder_start.h"
 
 #include <gtest/gtest.h>
 
@@ -28,10 +29,7 @@ inline GarmentTRun& garment_t_run() {
   static GarmentTRun run = [] {
     CaseFile file;
     file.read(TIGHTFIT_SOURCE_DIR "/cases/cylinder_T.prm", {"Output/Write VTU=false"});
-    char initial_radius[96];
-    std::snprintf(initial_radius, sizeof initial_radius, "Body/Cylinder/Initial radius=%.17g",
-                  1.2 * GarmentTRun::rest_radius_m);
-    file.set(initial_radius);
+    testing::start_cylinder_at(file, 1.2, GarmentTRun::rest_radius_m);
     CaseParameters parameters = file.parameters();
     parameters.output.write_files = false;
     GarmentTRun r;

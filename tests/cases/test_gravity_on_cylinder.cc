@@ -18,6 +18,7 @@
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
+#include "cylinder_start.h"
 
 #include <gtest/gtest.h>
 
@@ -52,18 +53,8 @@ std::vector<TopMinusBottom> run(const char* backend, const char* definition) {
   file.set(std::string("Pressure/Definition=") + definition);
   const std::vector<double> alphas = {1.2, 1.5, 1.8};
   const double rest_radius_m = 2 * 0.157 / (2 * M_PI);
-  char initial_radius[96];
-  std::snprintf(initial_radius, sizeof initial_radius, "Body/Cylinder/Initial radius=%.17g",
-                alphas.front() * rest_radius_m);
-  file.set(initial_radius);
-  CaseParameters parameters = file.parameters();
-  parameters.output.write_files = false;
-  std::unique_ptr<Scenario> setup = make_scenario(parameters);
-  setup->alphas = alphas;
   std::ostringstream log;
-  const RunResult result = run_scenario(
-      *setup, [&](const Problem& problem) { return file.create_backend(backend, problem); }, "",
-      log);
+  const RunResult result = testing::run_on_cylinder(file, backend, alphas, rest_radius_m, log);
   EXPECT_TRUE(result.completed) << result.failure << "\n" << log.str();
   int measured = -1, theory = -1;
   for (std::size_t c = 0; c < result.columns.size(); ++c) {

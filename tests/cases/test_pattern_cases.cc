@@ -2,10 +2,12 @@
 // "4 5T" read from a GarmentCode file, gives cases/cylinder_45T.prm's pressures on both
 // backends; a tube whose side seams are equal circular arcs (cases/patterns/
 // curved_seam_tube.json: each panel 18.78 cm wide at every height, so the sewn tube is the same
-// flat cylinder of rest circumference 37.56 cm) meets the closed form (docs/model.md, "Closed forms").
+// flat cylinder of rest circumference 37.56 cm) meets the closed form (docs/model.md, "Closed
+// forms").
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
+#include "cylinder_start.h"
 
 #include <gtest/gtest.h>
 
@@ -28,18 +30,8 @@ RunResult run_case(const std::string& case_file, const std::vector<std::string>&
   CaseFile file;
   file.read(source_dir + "/" + case_file, {"Output/Write VTU=false"});
   for (const std::string& o : overrides) file.set(o);
-  char initial_radius[96];
-  std::snprintf(initial_radius, sizeof initial_radius, "Body/Cylinder/Initial radius=%.17g",
-                alphas.front() * rest_radius_m);
-  file.set(initial_radius);
-  CaseParameters parameters = file.parameters();
-  parameters.output.write_files = false;
-  std::unique_ptr<Scenario> setup = make_scenario(parameters);
-  setup->alphas = alphas;
   std::ostringstream log;
-  RunResult run = run_scenario(
-      *setup, [&](const Problem& problem) { return file.create_backend(backend, problem); }, "",
-      log);
+  RunResult run = testing::run_on_cylinder(file, backend, alphas, rest_radius_m, log);
   EXPECT_TRUE(run.completed) << run.failure << "\n" << log.str();
   return run;
 }

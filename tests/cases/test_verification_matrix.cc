@@ -78,16 +78,9 @@ TEST_P(VerificationMatrix, MeanPressureMatchesClosedForm) {
   if (std::string(c.ends) == "held") file.set("Constraints/Held groups=bottom, top");
   // Start on a cylinder at alpha 1.2 and grow it to 1.5 and 1.8: the three alphas checked.
   const std::vector<double> alphas = {1.2, 1.5, 1.8};
-  testing::start_cylinder_at(file, alphas.front(), 2 * 0.157 / (2 * M_PI));
-  CaseParameters parameters = file.parameters();
-  parameters.output.write_files = false;
-  std::unique_ptr<Scenario> setup = make_scenario(parameters);
-  setup->alphas = alphas;
-
   std::ostringstream log;
-  const RunResult run = run_scenario(
-      *setup, [&](const Problem& problem) { return file.create_backend(c.backend, problem); }, "",
-      log);
+  const RunResult run =
+      testing::run_on_cylinder(file, c.backend, alphas, 2 * 0.157 / (2 * M_PI), log);
   ASSERT_TRUE(run.completed) << run.failure << "\n" << log.str();
   ASSERT_EQ(run.steps.size(), alphas.size());
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
