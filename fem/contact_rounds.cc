@@ -23,10 +23,9 @@ std::string format_residuals(const std::vector<double>& values) {
 ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
                              const FemParameters& parameters)
     : pattern_(pattern), problem_(problem), parameters_(parameters) {
-  const double h = pattern.mean_edge_m;
-  const double k_Pa_per_m = parameters.penalty_factor * problem.law->stiffness_scale() / (h * h);
-  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(pattern.mesh, pattern.edge_index,
-                                                   parameters.element_degree, k_Pa_per_m);
+  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(
+      pattern.mesh, pattern.edge_index, parameters.element_degree,
+      parameters.penalty_factor * problem.law->stiffness_scale(), pattern.node_edge_m);
   nodes_.multiplier_N.assign(pattern.n_nodes(), 0.0);
 }
 

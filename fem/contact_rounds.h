@@ -25,7 +25,8 @@ struct ContactRoundsResult {
 
 class ContactRounds {
  public:
-  // Penalty k = beta Y / h^2 (Pa/m) at every node (contact_nodes.h); multipliers start at 0.
+  // Penalty k_k = beta Y / h_k^2 (Pa/m) at node k, h_k its own edge length (contact_nodes.h);
+  // multipliers start at 0.
   ContactRounds(const PatternMesh& pattern, const Problem& problem,
                 const FemParameters& parameters);
 
