@@ -30,10 +30,9 @@ std::vector<double> node_edge_lengths_m(const SimulationMesh& mesh,
   return h;
 }
 
-std::vector<double> nodal_penalties_N_per_m(const SimulationMesh& mesh,
-                                            const std::map<std::array<int, 2>, int>& edge_index,
-                                            int element_degree, double beta_Y_N_per_m,
-                                            const std::vector<double>& node_edge_m) {
+std::vector<double> nodal_rest_areas_m2(const SimulationMesh& mesh,
+                                        const std::map<std::array<int, 2>, int>& edge_index,
+                                        int element_degree) {
   const bool quadratic = element_degree == 2;
   const std::vector<double> areas = rest_triangle_areas(mesh);
   std::vector<double> area(mesh.n_vertices + edge_index.size(), 0.0);
@@ -47,9 +46,15 @@ std::vector<double> nodal_penalties_N_per_m(const SimulationMesh& mesh,
       area[mesh.n_vertices + edge_index.at(ends)] += areas[t] / 4.0;
     }
   }
-  std::vector<double> penalty(area.size(), 0.0);
-  for (std::size_t k = 0; k < area.size(); ++k)
-    penalty[k] = beta_Y_N_per_m * area[k] / (node_edge_m[k] * node_edge_m[k]);
+  return area;
+}
+
+std::vector<double> nodal_penalties_N_per_m(const std::vector<double>& node_rest_area_m2,
+                                            double beta_Y_N_per_m,
+                                            const std::vector<double>& node_edge_m) {
+  std::vector<double> penalty(node_rest_area_m2.size(), 0.0);
+  for (std::size_t k = 0; k < penalty.size(); ++k)
+    penalty[k] = beta_Y_N_per_m * node_rest_area_m2[k] / (node_edge_m[k] * node_edge_m[k]);
   return penalty;
 }
 
