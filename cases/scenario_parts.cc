@@ -11,6 +11,7 @@ const PartRegistry<GarmentMaker>& garment_kinds() {
   static const PartRegistry<GarmentMaker> registry = [] {
     PartRegistry<GarmentMaker> r("Garment");
     r.add(tube_garment_entry());
+    r.add(tapered_tube_garment_entry());
     r.add(sheet_garment_entry());
     r.add(pattern_file_garment_entry());
     return r;

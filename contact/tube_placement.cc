@@ -10,9 +10,10 @@
 namespace tightfit {
 
 std::vector<Vec3> place_tube_round_axis(const Garment& garment, const SimulationMesh& mesh,
-                                        const Vec3& centre_m, const Vec3& axis, double radius_m) {
-  const double circumference_m = ring_circumference_m(garment);
-  if (!(circumference_m > 0))
+                                        const Vec3& centre_m, const Vec3& axis, double radius_m,
+                                        double stretch) {
+  const std::vector<RingCoordinate> ring = ring_coordinates(garment);
+  if (ring.empty() || static_cast<int>(ring.size()) != mesh.n_unwelded_vertices())
     throw std::invalid_argument("garment '" + garment.name + "' is not a closed tube");
   if (!(axis.norm() > 0)) throw std::invalid_argument("the tube's axis must not be zero");
   const Vec3 a = axis.normalized();
@@ -24,9 +25,10 @@ std::vector<Vec3> place_tube_round_axis(const Garment& garment, const Simulation
   std::vector<Vec3> x(mesh.n_vertices);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
     const Vec2& p = mesh.layout_positions_m[u];
-    const double angle = 2.0 * M_PI * p.x() / circumference_m;
+    const double angle = 2.0 * M_PI * ring[u].share;
+    const double r = stretch > 0 ? stretch * ring[u].girth_m / (2.0 * M_PI) : radius_m;
     x[mesh.welded_index[u]] =
-        centre_m + (p.y() - 0.5 * (v_min + v_max)) * a + radius_m * radial_direction(a, angle);
+        centre_m + (p.y() - 0.5 * (v_min + v_max)) * a + r * radial_direction(a, angle);
   }
   return x;
 }

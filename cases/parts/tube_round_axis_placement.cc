@@ -24,12 +24,18 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
     prm.declare_double("Radius", 0.1, 0, ParameterTree::unbounded,
                        "Radius of the tube's circle at the start (m): larger than the body "
                        "wherever the tube lies, so that it shrinks onto it.");
+    prm.declare_double("Stretch", 0, 0, ParameterTree::unbounded,
+                       "If positive, each ring of the tube is placed at this many times its own "
+                       "rest radius (its relaxed girth over 2 pi) instead of at Radius: a tapered "
+                       "tube stretched evenly along its length (-). 0: every ring at Radius.");
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
     const Vec3 centre = prm.get_vector("Centre");
     const std::string axis_text = prm.get("Axis");
     const double radius_m = prm.get_double("Radius");
-    if (!(radius_m > 0)) throw std::invalid_argument("Radius must be positive (m)");
+    const double stretch = prm.get_double("Stretch");
+    if (!(radius_m > 0) && !(stretch > 0))
+      throw std::invalid_argument("Radius must be positive (m)");
     std::optional<Vec3> axis;
     if (axis_text != "body") {
       axis = prm.get_vector("Axis");
@@ -41,7 +47,8 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
         throw std::invalid_argument("Placement/Tube round axis/Axis = body, but the body (" +
                                     scenario.body->describe() +
                                     ") has no axis: give a direction x,y,z");
-      return place_tube_round_axis(scenario.garment, scenario.mesh, centre, *direction, radius_m);
+      return place_tube_round_axis(scenario.garment, scenario.mesh, centre, *direction, radius_m,
+                                   stretch);
     };
   };
   return e;
