@@ -53,6 +53,7 @@ const PartRegistry<MeasurementMaker>& measurement_kinds() {
     r.add(stamps_measurement_entry());
     r.add(regions_measurement_entry());
     r.add(pictures_measurement_entry());
+    r.add(compression_class_measurement_entry());
     return r;
   }();
   return registry;

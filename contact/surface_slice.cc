@@ -132,6 +132,7 @@ SliceLoop slice_surface(const TriangleSurface& surface, const Vec3& axis, double
     const Vec2 centre = std::abs(twice_area) > 0 ? Vec2(moment / (3.0 * twice_area)) : flat[0];
     l.centroid_m = height_m * a + centre.x() * u + centre.y() * v;
     l.hull_perimeter_m = hull_perimeter_m(flat);
+    for (const Vec2& p : flat) l.reach_m = std::max(l.reach_m, (p - centre).norm());
     const bool inside = encloses(flat, target);
     const double distance = (centre - target).norm();
     // A loop round the point wins; among equals the nearest centroid (an enclosing loop inside

@@ -12,6 +12,7 @@ struct SliceLoop {
   double hull_perimeter_m = 0.0;   // of its convex hull: what a tape measure pulled tight reads
   double area_m2 = 0.0;            // enclosed, in the plane
   Vec3 centroid_m = Vec3::Zero();  // of the enclosed area
+  double reach_m = 0.0;            // the largest distance of the section from its centroid
   int n_points = 0;
 };
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "contact/cylinder.h"
+#include "contact/triangle_surface.h"
 #include "core/garment.h"
 
 #include <vector>
@@ -22,6 +23,14 @@ namespace tightfit {
 std::vector<Vec3> place_tube_round_axis(const Garment& garment, const SimulationMesh& mesh,
                                         const Vec3& centre_m, const Vec3& axis, double radius_m,
                                         double stretch = 0.0);
+
+// The same round a limb of the body `surface`: each ring centred on the centroid of the body's
+// section in its plane (normal to `axis`, the loop round the axis; contact/surface_slice.h) and
+// `clearance_m` outside that section's farthest point, so a tube follows a bent leg or arm.
+// Throws std::invalid_argument naming the ring's height when its plane misses the body.
+std::vector<Vec3> place_tube_round_limb(const Garment& garment, const SimulationMesh& mesh,
+                                        const Vec3& centre_m, const Vec3& axis,
+                                        const TriangleSurface& surface, double clearance_m);
 
 std::vector<Vec3> place_tube_round_cylinder(const Garment& garment, const SimulationMesh& mesh,
                                             const Cylinder& cylinder, double radius_m);

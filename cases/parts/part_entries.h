@@ -34,5 +34,6 @@ PartEntry<MeasurementMaker> air_pack_sensors_measurement_entry();
 PartEntry<MeasurementMaker> stamps_measurement_entry();
 PartEntry<MeasurementMaker> regions_measurement_entry();
 PartEntry<MeasurementMaker> pictures_measurement_entry();
+PartEntry<MeasurementMaker> compression_class_measurement_entry();
 
 }  // namespace tightfit

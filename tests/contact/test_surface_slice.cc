@@ -1,9 +1,12 @@
 // Slices of body surfaces (contact/surface_slice.h) against the geometry they were built from: a
 // faceted cylinder's section is its polygon (perimeter, area, centroid on the axis), a faceted
 // cone's is the polygon of its radius at that height, two legs side by side give the loop round
-// the point asked for, and a plane that misses the body is refused naming its height.
+// the point asked for, and a plane that misses the body is refused naming its height; a tube
+// placed round such a limb goes round its sections.
 #include "contact/mesh_import.h"
 #include "contact/surface_slice.h"
+#include "contact/tube_placement.h"
+#include "core/tube_garment.h"
 #include "tests/contact/body_mesh_files.h"
 
 #include <gtest/gtest.h>
@@ -77,6 +80,30 @@ TEST(SurfaceSlice, PlaneMissingTheBodyIsRefused) {
     FAIL() << "a plane above the body was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("0.700000"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tightfit
+
+namespace tightfit {
+namespace {
+
+// A tube placed round a limb (contact/tube_placement.h) that is off the axis given: every ring
+// goes round the section's centroid, its farthest point (the polygon's circumradius) plus the
+// clearance away.
+TEST(TubeRoundLimb, RingsCentreOnTheSections) {
+  const int n = 36;
+  const TriangleSurface leg =
+      z_up(testing::revolution_surface({-0.2, 0.3}, {0.05, 0.05}, n), Vec3(0.02, -0.01, 0));
+  const Garment tube = make_tube_garment("sleeve", 0.1, 0.2, 2, MeshSpacing{0.01, 0.02});
+  const SimulationMesh mesh = weld(tube);
+  const std::vector<Vec3> x =
+      place_tube_round_limb(tube, mesh, Vec3::Zero(), Vec3::UnitZ(), leg, 0.01);
+  ASSERT_EQ(static_cast<int>(x.size()), mesh.n_vertices);
+  for (const Vec3& p : x) {
+    EXPECT_NEAR(std::hypot(p.x() - 0.02, p.y() + 0.01), 0.06, 1e-12);
+    EXPECT_LE(std::abs(p.z()), 0.1 + 1e-12);
   }
 }
 
