@@ -22,8 +22,8 @@ std::vector<int> group_vertices(const SimulationMesh& mesh, const std::string& g
     std::string known;
     for (const auto& [name, vertices] : mesh.vertex_groups)
       known += (known.empty() ? "" : ", ") + name;
-    throw std::invalid_argument("the garment has no vertex group '" + group + "' (it has: " +
-                                known + ", and all)");
+    throw std::invalid_argument("the garment has no vertex group '" + group +
+                                "' (it has: " + known + ", and all)");
   }
   return found->second;
 }
