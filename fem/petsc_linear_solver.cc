@@ -43,6 +43,8 @@ void PetscLinearSolver::configure() {
       check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
       check(PCSetType(pc, PCLU), "PCSetType");
       check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+      check(KSPSetOptionsPrefix(ksp_, "fem_"), "KSPSetOptionsPrefix");
+      check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
       return;
     case LinearSolverKind::cg_amg:
       check(KSPSetType(ksp_, KSPCG), "KSPSetType");
