@@ -26,6 +26,7 @@
 #   BLAS_DIR: a folder with another libblas.so.3 (e.g. OpenBLAS's), put first on
 #   LD_LIBRARY_PATH for the runs; the table's route names get a suffix "+blas".
 #   APPEND=1: add to the table of an earlier run instead of starting it afresh.
+#   PLOT_ONLY=1: no runs; fit and draw the existing table again.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 tightfit=${TIGHTFIT:-build/app/tightfit}
@@ -46,7 +47,8 @@ figures=docs/figures
 mkdir -p "$results" "$figures"
 table=$figures/scaling${suffix:+_blas}.csv
 # APPEND=1 adds rows to the table of an earlier run (a study done in parts).
-[[ ${APPEND:-0} == 1 && -f $table ]] ||
+plot_only=${PLOT_ONLY:-0}
+[[ ($plot_only == 1 || ${APPEND:-0} == 1) && -f $table ]] ||
   echo "route,ranks,mesh_scale,n_vertices,first_contact_cpu_s,first_contact_iterations,next_step_cpu_s,next_step_iterations,peak_rss_MB,peak_kB_per_vertex,status" >"$table"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 
@@ -81,6 +83,7 @@ measure() {
     tee -a "$table"
 }
 
+[[ $plot_only == 1 ]] && scales=()
 for scale in "${scales[@]}"; do
   measure massspring-implicit 1 "$scale" --set "Solver/Backend=massspring" \
     --set "Mass spring/Integrator=implicit"
@@ -122,7 +125,7 @@ plot sel("massspring-implicit$suffix", 1) using 4:5 with linespoints title "mass
      sel("fem-direct$suffix", 1) using 4:5 with linespoints title "FE, MUMPS, 1 rank", \
      sel("fem-direct$suffix", 2) using 4:5 with linespoints title "FE, MUMPS, 2 ranks (rank 0)", \
      sel("fem-cg-amg$suffix", 1) using 4:5 with linespoints title "FE, CG + BoomerAMG", \
-     [2000:100000] 0.5 * (x / 8460.0)**1.5 with lines dashtype 2 title "N^1.5"
+     [2000:100000] 0.5 * (x / 8460.0)**1.5 with lines dashtype 2 title "N^{1.5}"
 GNUPLOT
 fi
 echo "table $table, fits $fit, figure $figures/scaling${suffix:+_blas}.png"
