@@ -46,24 +46,20 @@ struct LaplaceCheck {
 
 LaplaceCheck run(const std::string& backend, const std::vector<std::string>& garment) {
   std::vector<std::string> settings = {
-      "Garment/Name=ring",
-      "Garment/Edge length weft=0.008",
-      "Garment/Edge length warp=0.01",
-      "Material/Law=linear biot",
-      setting("Material/Stiffness weft", kStiffness),
-      setting("Material/Stiffness warp", kStiffness),
-      "Material/Poisson ratio weft-warp=0",
-      "Body/Kind=cone",
-      "Body/Cone/Axis point=0,0,0",
-      "Body/Cone/Axis=0,0,1",
+      "Garment/Name=ring", "Garment/Edge length weft=0.008", "Garment/Edge length warp=0.01",
+      "Material/Law=linear biot", setting("Material/Stiffness weft", kStiffness),
+      setting("Material/Stiffness warp", kStiffness), "Material/Poisson ratio weft-warp=0",
+      "Body/Kind=cone", "Body/Cone/Axis point=0,0,0", "Body/Cone/Axis=0,0,1",
       setting("Body/Cone/Radius at axis point", kRadiusAtCentre),
       setting("Body/Cone/Half angle", std::atan(kTanHalfAngle) * 180 / M_PI),
-      "Placement/Kind=tube round axis",
-      "Placement/Tube round axis/Centre=0,0,0",
-      "Placement/Tube round axis/Radius=0.07",
-      "Constraints/Held groups=bottom, top",
-      "Protocol/Final alpha=1",
-      "Pressure/Definition=contact traction"};
+      "Placement/Kind=tube round axis", "Placement/Tube round axis/Centre=0,0,0",
+      "Placement/Tube round axis/Radius=0.07", "Constraints/Held groups=bottom, top",
+      "Protocol/Final alpha=1", "Pressure/Definition=contact traction",
+      // The FE backend's first contact of the tapered tube (rings placed 1 cm off the cone,
+      // exact unsymmetric contact tangent) needs more than the default 40 Newton iterations
+      // in one augmented-Lagrangian round; the answer is the same as with the symmetric
+      // tangent, which converged within 40 (largest error 3.71e-3 both ways).
+      "Finite elements/Maximum Newton iterations=300"};
   settings.insert(settings.end(), garment.begin(), garment.end());
   const testing::BodyCaseRun r = run_body_case(settings, backend);
   EXPECT_TRUE(r.run.completed) << r.run.failure << "\n" << r.log;
