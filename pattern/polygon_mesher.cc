@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -45,6 +46,24 @@ PolygonMesh::BoundaryPoint on_outline(const std::vector<Vec2>& outline, const Ve
   return best;
 }
 
+// An outline that runs back along itself (a turn of 180 degrees between consecutive chords)
+// has a sliver of no area there: CGAL's constrained triangulation then dereferences a null face
+// while inserting the overlapping constraints (found by fuzz_pattern_dxf), so it is refused
+// before.
+void require_no_reversal(const std::vector<Vec2>& outline_m) {
+  const std::size_t n = outline_m.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2& x = outline_m[k];
+    const Vec2 in = x - outline_m[(k + n - 1) % n], out = outline_m[(k + 1) % n] - x;
+    const double cross = in.x() * out.y() - in.y() * out.x();
+    if (in.dot(out) < 0 && std::abs(cross) <= 1e-12 * in.norm() * out.norm()) {
+      char where[96];
+      std::snprintf(where, sizeof where, "(%.6g, %.6g) m", x.x(), x.y());
+      throw std::invalid_argument(std::string("the outline turns back on itself at ") + where);
+    }
+  }
+}
+
 }  // namespace
 
 // 1000 more: a strip narrower than h (a waistband 1 m by 5 mm at h = 5 cm takes 322
@@ -68,6 +87,7 @@ PolygonMesh mesh_polygon(const std::vector<Vec2>& outline_m, double edge_length_
   if (!(edge_length_m > 0)) throw std::invalid_argument("the mesh edge length must be positive");
   if (!(min_angle_deg > 0) || min_angle_deg > 33)
     throw std::invalid_argument("the minimum angle must be in (0, 33] degrees");
+  require_no_reversal(outline_m);
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> outline_vertex;
   for (const Vec2& x : outline_m) outline_vertex.push_back(cdt.insert(Point(x.x(), x.y())));
