@@ -25,6 +25,8 @@
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace tightfit {
 namespace {
@@ -91,13 +93,21 @@ BodyMeshError file_error(const std::string& path, int line, const std::string& m
 }
 
 // VTK's OBJ reader takes "v 1 x 0" or "v 0 0" without a word (it reads what it can): every
-// vertex line must hold three numbers.
-void check_obj_vertex_lines(const std::string& path) {
+// vertex line must hold three numbers. It also follows a face's texture and normal indices
+// ("f 1/2/3 ...") without checking them: one past the file's "vt" lines is a null pointer
+// read (found by fuzz_body_mesh_obj), so every index of a face must name a line the file has.
+void check_obj_lines(const std::string& path) {
   std::ifstream in(path);
   std::string line;
+  std::map<std::string, long> count;  // "v", "vt", "vn" lines
+  std::vector<std::pair<int, std::string>> faces;
   for (int number = 1; std::getline(in, line); ++number) {
-    if (line.rfind("v ", 0) != 0 && line.rfind("v\t", 0) != 0) continue;
-    std::istringstream words(line.substr(2));
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "v" || keyword == "vt" || keyword == "vn") ++count[keyword];
+    if (keyword == "f") faces.emplace_back(number, line);
+    if (keyword != "v") continue;
     std::string word;
     for (int k = 0; k < 3; ++k) {
       if (!(words >> word))
@@ -106,6 +116,24 @@ void check_obj_vertex_lines(const std::string& path) {
       std::strtod(word.c_str(), &end);
       if (end == word.c_str() || *end != '\0')
         throw file_error(path, number, "'" + word + "' is not a number: '" + line + "'");
+    }
+  }
+  const char* kinds[3] = {"v", "vt", "vn"};
+  for (const auto& [number, face] : faces) {
+    std::istringstream words(face.substr(1));
+    for (std::string corner; words >> corner;) {
+      std::istringstream parts(corner);
+      std::string part;
+      for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
+        if (part.empty() && k > 0) continue;  // "1//3": no texture coordinate
+        char* end = nullptr;
+        const long index = std::strtol(part.c_str(), &end, 10);
+        if (end == part.c_str() || *end != '\0' || index < 1 || index > count[kinds[k]])
+          throw file_error(path, number,
+                           "face corner '" + corner + "': '" + part + "' is not one of the " +
+                               std::to_string(count[kinds[k]]) + " '" + kinds[k] +
+                               "' lines (indices count from 1; relative ones are not read)");
+      }
     }
   }
 }
@@ -224,7 +252,7 @@ PolygonMesh read_polygon_mesh(const std::string& path) {
   const std::string ext = lower_extension(path);
   auto reader = reader_for(path, ext);
   if (ext == "obj") check_obj_size(path);
-  if (ext == "obj") check_obj_vertex_lines(path);
+  if (ext == "obj") check_obj_lines(path);
   if (ext == "ply") check_ply_complete(path);
   if (ext == "stl") check_stl_size(path);
   // The reader's own reports say what is wrong; the pipeline's only that the reader failed.

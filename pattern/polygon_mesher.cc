@@ -92,14 +92,16 @@ PolygonMesh mesh_polygon(const std::vector<Vec2>& outline_m, double edge_length_
   std::vector<Cdt::Vertex_handle> outline_vertex;
   for (const Vec2& x : outline_m) outline_vertex.push_back(cdt.insert(Point(x.x(), x.y())));
   const std::size_t n = outline_m.size();
+  // Before any constraint: a constraint from a vertex to itself (a segment of no length) makes
+  // CGAL dereference a null face (found by fuzz_pattern_dxf).
+  if (cdt.number_of_vertices() != n)
+    throw std::invalid_argument("the outline passes twice through one point");
   try {
     for (std::size_t k = 0; k < n; ++k)
       cdt.insert_constraint(outline_vertex[k], outline_vertex[(k + 1) % n]);
   } catch (const Cdt::Intersection_of_constraints_exception&) {
     throw std::invalid_argument("the outline crosses itself");
   }
-  if (cdt.number_of_vertices() != n)
-    throw std::invalid_argument("the outline passes twice through one point");
 
   // CGAL's shape bound is sin^2 of the smallest angle; its size bound the longest edge.
   const double sine = std::sin(min_angle_deg * M_PI / 180.0);
