@@ -122,6 +122,9 @@ void check_obj_lines(const std::string& path) {
   for (const auto& [number, face] : faces) {
     std::istringstream words(face.substr(1));
     for (std::string corner; words >> corner;) {
+      // "26/": VTK takes the missing index after the slash for one (a null read).
+      if (corner.back() == '/')
+        throw file_error(path, number, "face corner '" + corner + "' ends with '/'");
       std::istringstream parts(corner);
       std::string part;
       for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
