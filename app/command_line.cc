@@ -1,5 +1,7 @@
 #include "app/command_line.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace tightfit {
@@ -22,6 +24,12 @@ Usage:
       meshed panels (pattern.vtu) and a drawing of the outlines and seams (outlines.png) into
       DIR (default output/pattern). --seams and --folds add declarations as in the case file's
       Garment/Pattern file section (docs/patterns.md).
+  tightfit girths CASE.prm --near X,Y,Z --heights H1,H2,... [--axis X,Y,Z] [--set ...]
+      Slices the case's body by planes normal to the axis (default 0,0,1) at each height (m,
+      in the run's coordinates) and prints, for the loop round the point --near (a leg, not
+      the other one), its girth along the section and as a tape reads it (the convex hull),
+      its area and centroid, and the line through the first and last centroids: the limb's
+      axis for Placement/Tube round axis (docs/stocking.md).
   tightfit --print-parameters [--prm | --json]
       Lists every parameter with its documentation, unit and default (--prm: as a case file to
       start from; --json: with each entry's allowed values).
@@ -31,6 +39,27 @@ Every parameter is in SI units (m, N/m, Pa, kg/m^2); tables also show gf/cm^2 an
 Exit status: 0 success, 1 a solver failed (results so far are kept), 2 bad input.
 )";
 }
+
+namespace {
+
+// "1,2.5,-3" as numbers; throws UsageError naming the option.
+std::vector<double> number_list(const std::string& option, const std::string& text) {
+  std::vector<double> numbers;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string piece = text.substr(begin, comma - begin);
+    char* end = nullptr;
+    const double x = std::strtod(piece.c_str(), &end);
+    if (piece.empty() || end != piece.c_str() + piece.size() || !std::isfinite(x))
+      throw UsageError(option + " needs numbers separated by commas, not '" + text + "'");
+    numbers.push_back(x);
+    begin = comma + 1;
+  }
+  return numbers;
+}
+
+}  // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv) {
   CommandLine cl;
@@ -54,7 +83,8 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     }
     return cl;
   }
-  if (first != "run" && first != "compare" && first != "convergence" && first != "pattern")
+  if (first != "run" && first != "compare" && first != "convergence" && first != "pattern" &&
+      first != "girths")
     throw UsageError("unknown command '" + first + "'");
   cl.command = first;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -87,11 +117,23 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
       cl.pattern_seams = value();
     } else if (first == "pattern" && a == "--folds") {
       cl.pattern_folds = value();
+    } else if (first == "girths" && (a == "--near" || a == "--heights" || a == "--axis")) {
+      std::vector<double>& list = a == "--near"      ? cl.girths_near
+                                  : a == "--heights" ? cl.girths_heights
+                                                     : cl.girths_axis;
+      list = number_list(a, value());
+      if (a != "--heights" && list.size() != 3) throw UsageError(a + " needs three numbers x,y,z");
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError("unknown option '" + a + "'");
     } else {
       cl.case_files.push_back(a);
     }
+  }
+  if (cl.command == "girths") {
+    if (cl.case_files.size() != 1) throw UsageError("girths takes one case file");
+    if (cl.girths_near.empty() || cl.girths_heights.empty())
+      throw UsageError("girths needs --near X,Y,Z and --heights H1,H2,...");
+    return cl;
   }
   if (cl.command == "pattern") {
     if (cl.case_files.size() != 1) throw UsageError("pattern takes one pattern file");

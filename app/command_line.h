@@ -9,7 +9,8 @@
 namespace tightfit {
 
 struct CommandLine {
-  std::string command;  // run, compare, convergence, pattern, print-parameters, help, version
+  std::string
+      command;  // run, compare, convergence, pattern, girths, print-parameters, help, version
   std::vector<std::string> case_files;
   std::string output_dir;                  // empty: the case's Output/Directory
   std::vector<std::string> overrides;      // "Path/To/Entry=value"
@@ -18,6 +19,8 @@ struct CommandLine {
   // pattern: target mesh edge length (m), seams and fold edges besides the file's.
   double pattern_edge_length_m = 0.01;
   std::string pattern_seams, pattern_folds;
+  // girths: the point the limb's loop must enclose, the slice heights and their direction.
+  std::vector<double> girths_near, girths_heights, girths_axis = {0.0, 0.0, 1.0};
   int rank = 0;  // this process among the MPI ranks
   int n_ranks = 1;
   // Reports an error of this rank alone and ends every rank (OutputSettings::end_every_rank).

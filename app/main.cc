@@ -3,6 +3,7 @@
 #include "app/command_line.h"
 #include "app/compare_command.h"
 #include "app/convergence_command.h"
+#include "app/girths_command.h"
 #include "app/mpi_session.h"
 #include "app/pattern_command.h"
 #include "app/run_command.h"
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
     if (cl.command == "run" || cl.command == "compare" || cl.command == "convergence")
       return status;
     if (cl.command == "pattern") return pattern_command(cl, out);
+    if (cl.command == "girths") return girths_command(cl, out);
     std::cerr << "tightfit: '" << cl.command << "' is not available yet\n";
     return 2;
   } catch (const UsageError& e) {

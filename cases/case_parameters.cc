@@ -169,9 +169,10 @@ void declare_constraints(ParameterHandler& prm) {
   prm.enter_subsection("Constraints");
   prm.declare_entry("Held groups", "", Patterns::Anything(),
                     "Comma-separated vertex groups of the garment (a tube's: bottom, top; a "
-                    "sheet's: bottom, top, left, right) that keep their coordinate along Held "
-                    "direction. 'bottom, top' on a tube: the paper's held ends (axial stretch "
-                    "1); empty: free ends.");
+                    "sheet's: bottom, top, left, right; 'all': every vertex) that keep their "
+                    "coordinate along Held direction. 'bottom, top' on a tube: the paper's held "
+                    "ends (axial stretch 1); 'all' on a stocking: the knit gripped along the "
+                    "leg, free round it; empty: free ends.");
   prm.declare_entry("Held direction", "axis", Patterns::Anything(),
                     "Direction the held groups may not move along: 'axis' for the body's own "
                     "(a cylinder's axis, a plane's normal), or three numbers x,y,z (-).");

@@ -11,6 +11,7 @@ const PartRegistry<GarmentMaker>& garment_kinds() {
   static const PartRegistry<GarmentMaker> registry = [] {
     PartRegistry<GarmentMaker> r("Garment");
     r.add(tube_garment_entry());
+    r.add(tapered_tube_garment_entry());
     r.add(sheet_garment_entry());
     r.add(pattern_file_garment_entry());
     return r;
@@ -52,6 +53,7 @@ const PartRegistry<MeasurementMaker>& measurement_kinds() {
     r.add(stamps_measurement_entry());
     r.add(regions_measurement_entry());
     r.add(pictures_measurement_entry());
+    r.add(compression_class_measurement_entry());
     return r;
   }();
   return registry;

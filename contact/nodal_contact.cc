@@ -17,6 +17,8 @@ NodalContact nodal_contact(const RigidBody& body, const Vec3& x_m, double multip
   const Mat3 K = penalty_N_per_m * c.normal * s.gap_gradient.transpose() -
                  c.multiplier_N * s.normal_derivative_per_m;
   c.stiffness_N_per_m = 0.5 * (K + K.transpose());
+  c.exact_stiffness_N_per_m = K;
+  c.multiplier_gradient_N_per_m = -penalty_N_per_m * s.gap_gradient;
   return c;
 }
 

@@ -24,6 +24,11 @@ struct NodalContact {
   // for the analytic bodies, where dg/dx = n and dn/dx is symmetric so nothing is lost; a mesh
   // body's smooth normal makes the exact derivative slightly unsymmetric.
   Mat3 stiffness_N_per_m = Mat3::Zero();
+  // The same unsymmetrised, kA n (dg/dx)^T - lambda dn/dx: the exact derivative, for solvers
+  // that take an unsymmetric matrix (it equals the symmetrised one on the analytic bodies).
+  Mat3 exact_stiffness_N_per_m = Mat3::Zero();
+  // d(lambda)/dx = -kA dg/dx while in contact, N/m (friction's cone scales with it).
+  Vec3 multiplier_gradient_N_per_m = Vec3::Zero();
 };
 
 // `with_stiffness` false skips the stiffness (the force alone).

@@ -1,34 +1,80 @@
 #include "contact/tube_placement.h"
 
 #include "contact/axis_frame.h"
+#include "contact/surface_slice.h"
 #include "core/tube_garment.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace tightfit {
 
-std::vector<Vec3> place_tube_round_axis(const Garment& garment, const SimulationMesh& mesh,
-                                        const Vec3& centre_m, const Vec3& axis, double radius_m) {
-  const double circumference_m = ring_circumference_m(garment);
-  if (!(circumference_m > 0))
+namespace {
+
+// Where each ring of a tube goes: its centre and radius from its height along the axis (m from
+// the tube's middle) and its rest girth.
+using RingPlacement = std::function<std::pair<Vec3, double>(double height_m, double girth_m)>;
+
+std::vector<Vec3> place_rings(const Garment& garment, const SimulationMesh& mesh, const Vec3& a,
+                              const RingPlacement& ring_at) {
+  const std::vector<RingCoordinate> ring = ring_coordinates(garment);
+  if (ring.empty() || static_cast<int>(ring.size()) != mesh.n_unwelded_vertices())
     throw std::invalid_argument("garment '" + garment.name + "' is not a closed tube");
-  if (!(axis.norm() > 0)) throw std::invalid_argument("the tube's axis must not be zero");
-  const Vec3 a = axis.normalized();
   double v_min = mesh.layout_positions_m.front().y(), v_max = v_min;
   for (const Vec2& p : mesh.layout_positions_m) {
     v_min = std::min(v_min, p.y());
     v_max = std::max(v_max, p.y());
   }
   std::vector<Vec3> x(mesh.n_vertices);
+  std::map<std::pair<double, double>, std::pair<Vec3, double>> rings;  // one per row
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u) {
-    const Vec2& p = mesh.layout_positions_m[u];
-    const double angle = 2.0 * M_PI * p.x() / circumference_m;
-    x[mesh.welded_index[u]] =
-        centre_m + (p.y() - 0.5 * (v_min + v_max)) * a + radius_m * radial_direction(a, angle);
+    const double height_m = mesh.layout_positions_m[u].y() - 0.5 * (v_min + v_max);
+    const auto row = std::make_pair(height_m, ring[u].girth_m);
+    auto found = rings.find(row);
+    if (found == rings.end()) found = rings.emplace(row, ring_at(height_m, ring[u].girth_m)).first;
+    const auto& [centre_m, radius_m] = found->second;
+    x[mesh.welded_index[u]] = centre_m + radius_m * radial_direction(a, 2.0 * M_PI * ring[u].share);
   }
   return x;
+}
+
+Vec3 unit_axis(const Vec3& axis) {
+  if (!(axis.norm() > 0)) throw std::invalid_argument("the tube's axis must not be zero");
+  return axis.normalized();
+}
+
+}  // namespace
+
+std::vector<Vec3> place_tube_round_axis(const Garment& garment, const SimulationMesh& mesh,
+                                        const Vec3& centre_m, const Vec3& axis, double radius_m,
+                                        double stretch) {
+  const Vec3 a = unit_axis(axis);
+  return place_rings(garment, mesh, a, [&](double height_m, double girth_m) {
+    const double r = stretch > 0 ? stretch * girth_m / (2.0 * M_PI) : radius_m;
+    return std::make_pair(Vec3(centre_m + height_m * a), r);
+  });
+}
+
+std::vector<Vec3> place_tube_round_limb(const Garment& garment, const SimulationMesh& mesh,
+                                        const Vec3& centre_m, const Vec3& axis,
+                                        const TriangleSurface& surface, double clearance_m) {
+  const Vec3 a = unit_axis(axis);
+  return place_rings(garment, mesh, a, [&](double height_m, double) {
+    const Vec3 on_axis = centre_m + height_m * a;
+    SliceLoop section;
+    try {
+      section = slice_surface(surface, a, a.dot(on_axis), on_axis);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("the ring " + std::to_string(height_m) +
+                                  " m from the tube's middle: " + e.what());
+    }
+    return std::make_pair(section.centroid_m, section.reach_m + clearance_m);
+  });
 }
 
 std::vector<Vec3> place_tube_round_cylinder(const Garment& garment, const SimulationMesh& mesh,

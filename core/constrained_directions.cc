@@ -10,14 +10,20 @@ namespace {
 // Directions closer than this to the span of those already held add nothing.
 constexpr double independent = 1e-9;
 
-const std::vector<int>& group_vertices(const SimulationMesh& mesh, const std::string& group) {
+// A vertex group of the mesh, or every vertex for the group "all".
+std::vector<int> group_vertices(const SimulationMesh& mesh, const std::string& group) {
+  if (group == "all") {
+    std::vector<int> every(mesh.n_vertices);
+    for (int v = 0; v < mesh.n_vertices; ++v) every[v] = v;
+    return every;
+  }
   const auto found = mesh.vertex_groups.find(group);
   if (found == mesh.vertex_groups.end()) {
     std::string known;
     for (const auto& [name, vertices] : mesh.vertex_groups)
       known += (known.empty() ? "" : ", ") + name;
-    throw std::invalid_argument("the garment has no vertex group '" + group + "' (it has: " +
-                                known + ")");
+    throw std::invalid_argument("the garment has no vertex group '" + group +
+                                "' (it has: " + known + ", and all)");
   }
   return found->second;
 }

@@ -15,7 +15,8 @@ std::string trimmed(const std::string& text) {
   return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
 }
 
-double parse_number(const std::string& text, const std::string& entry, const std::string& piece) {
+double parse_number(const std::string& text, const std::string& entry, const std::string& piece,
+                    const std::string& form) {
   std::size_t used = 0;
   double value = 0.0;
   try {
@@ -24,8 +25,7 @@ double parse_number(const std::string& text, const std::string& entry, const std
     used = 0;
   }
   if (used == 0 || used != text.size() || !std::isfinite(value))
-    throw std::invalid_argument(entry + ": cannot read '" + piece +
-                                "' as strain:value (e.g. 0.35:24.5)");
+    throw std::invalid_argument(entry + ": cannot read '" + piece + "' as " + form);
   return value;
 }
 
@@ -70,7 +70,8 @@ MonotoneCubic poisson_curve(const std::vector<CurvePoint>& points, const std::st
 
 }  // namespace
 
-std::vector<CurvePoint> parse_curve_points(const std::string& text, const std::string& entry) {
+std::vector<CurvePoint> parse_curve_points(const std::string& text, const std::string& entry,
+                                           const std::string& form) {
   std::vector<CurvePoint> points;
   std::stringstream list(text);
   for (std::string piece; std::getline(list, piece, ',');) {
@@ -78,10 +79,9 @@ std::vector<CurvePoint> parse_curve_points(const std::string& text, const std::s
     if (piece.empty()) continue;
     const auto colon = piece.find(':');
     if (colon == std::string::npos)
-      throw std::invalid_argument(entry + ": cannot read '" + piece +
-                                  "' as strain:value (e.g. 0.35:24.5)");
-    points.push_back({parse_number(trimmed(piece.substr(0, colon)), entry, piece),
-                      parse_number(trimmed(piece.substr(colon + 1)), entry, piece)});
+      throw std::invalid_argument(entry + ": cannot read '" + piece + "' as " + form);
+    points.push_back({parse_number(trimmed(piece.substr(0, colon)), entry, piece, form),
+                      parse_number(trimmed(piece.substr(colon + 1)), entry, piece, form)});
   }
   return points;
 }

@@ -25,8 +25,11 @@ struct CurvePoint {
 };
 
 // Parses "strain:value, strain:value, ..." (e.g. "0:0, 0.35:24.5, 0.6:49"). Throws
-// std::invalid_argument naming `entry` and the piece it could not read.
-std::vector<CurvePoint> parse_curve_points(const std::string& text, const std::string& entry);
+// std::invalid_argument naming `entry` and the piece it could not read, with `form` saying what
+// a piece should look like.
+std::vector<CurvePoint> parse_curve_points(
+    const std::string& text, const std::string& entry,
+    const std::string& form = "strain:value (e.g. 0.35:24.5)");
 std::string format_curve_points(const std::vector<CurvePoint>& points);
 
 struct TensileCurveData {

@@ -4,6 +4,8 @@
 #include "core/garment.h"
 #include "core/rectangle_panel.h"
 
+#include <vector>
+
 namespace tightfit {
 
 // `n_panels` equal panels, each panel_width_m (round the tube, along the weft) by
@@ -20,5 +22,22 @@ Garment make_tube_garment(const std::string& name, double panel_width_m, double 
 // (x from the lowest vertex of the left edge to the lowest of the right), metres. Zero for
 // any other garment.
 double ring_circumference_m(const Garment& garment);
+
+// The panels in their order round a ring sewn right edge to left edge, from panel 0; empty for
+// any other garment.
+std::vector<int> ring_order(const Garment& garment);
+
+// Where each panel vertex lies round the ring: the share of its row's girth from the left edge
+// of the first panel to it (0 to 1), and that girth (m), the row's widths at its height summed
+// over the panels (each width between its panel's left and right edges, linear along them): a
+// tapered tube's (core/tapered_tube_garment.h) rows. A ring of one girth at every height
+// (rectangles, side edges curved alike) keeps its layout instead: its share is the layout x
+// over the girth. Panel by panel, as SimulationMesh numbers unwelded vertices; empty when the
+// garment is not a ring.
+struct RingCoordinate {
+  double share = 0.0;
+  double girth_m = 0.0;
+};
+std::vector<RingCoordinate> ring_coordinates(const Garment& garment);
 
 }  // namespace tightfit

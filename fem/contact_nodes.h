@@ -1,8 +1,10 @@
 // The augmented-Lagrangian contact's state at the FE nodes (welded vertices, then with degree 2
 // the welded edges' midpoints): each node's penalty stiffness and multiplier estimate, the
-// arguments of contact/nodal_contact.h.
+// arguments of contact/nodal_contact.h, and each node's own mesh size h_k, which sets its
+// penalty and its share of Newton's stop rule.
 #pragma once
 
+#include "contact/friction_anchors.h"
 #include "core/garment.h"
 
 #include <array>
@@ -12,20 +14,38 @@
 namespace tightfit {
 
 struct ContactNodes {
-  std::vector<double> penalty_N_per_m;  // k w_k per node (w_k its positive nodal rest area)
+  std::vector<double> penalty_N_per_m;  // k_k w_k per node (w_k its positive nodal rest area)
   std::vector<double> multiplier_N;     // augmented-Lagrangian estimate per node, N
+  // Coulomb friction's anchors per node, the tangential penalty of node k being the Problem's
+  // tangential stiffness times w_k (inactive when the Problem's mu is 0).
+  FrictionAnchors friction;
 };
 
-// The penalty k w_k of each node, k in Pa/m and w_k a positive rest area per node. Linear
-// triangles (degree 1): the barycentric third of each triangle (their lumped mass). Quadratic
+// The rest edge length h_k of each node, m. A vertex: the mean rest length of the triangle
+// edges that meet at it (each triangle counts its two edges there, so on a uniform mesh every
+// interior vertex gets the mesh's mean edge). A midpoint (degree 2): the mean of its edge's two
+// ends. On a graded mesh h_k follows the local element size, where one mean edge would make
+// the small elements' nodes soft (slow multiplier updates) and the large ones' stiff.
+// `edge_ends` maps a welded edge to its two welded vertices (empty for degree 1).
+std::vector<double> node_edge_lengths_m(const SimulationMesh& mesh,
+                                        const std::vector<std::array<int, 2>>& edge_ends,
+                                        int element_degree);
+
+// The positive rest area w_k of each node, m^2. Linear triangles (degree 1): the barycentric
+// third of each triangle (their lumped mass, the mass-spring backend's vertex area). Quadratic
 // triangles: their lumped (row-sum) mass gives the corners zero area, which would leave them
-// without contact, so each triangle is split at its edge midpoints into four linear triangles
-// of area A/4 whose lumped masses give A/12 to each corner and A/4 to each midpoint
-// (3 x A/12 + 3 x A/4 = A). `edge_index` maps a sorted welded vertex pair to its edge's
-// midpoint node minus n_vertices. These weights only set the penalty, which the
-// augmented-Lagrangian updates remove from the converged state.
-std::vector<double> nodal_penalties_N_per_m(const SimulationMesh& mesh,
-                                            const std::map<std::array<int, 2>, int>& edge_index,
-                                            int element_degree, double k_Pa_per_m);
+// without contact, so each triangle is split at its edge midpoints into four linear triangles of
+// area A/4 whose lumped masses give A/12 to each corner and A/4 to each midpoint (3 x A/12 + 3 x
+// A/4 = A). `edge_index` maps a sorted welded vertex pair to its edge's midpoint node minus
+// n_vertices.
+std::vector<double> nodal_rest_areas_m2(const SimulationMesh& mesh,
+                                        const std::map<std::array<int, 2>, int>& edge_index,
+                                        int element_degree);
+
+// The penalty k_k w_k of each node, with k_k = beta Y / h_k^2 (Pa/m; beta_Y_N_per_m = beta Y).
+// It only sets how fast the augmented-Lagrangian updates converge, never the converged state.
+std::vector<double> nodal_penalties_N_per_m(const std::vector<double>& node_rest_area_m2,
+                                            double beta_Y_N_per_m,
+                                            const std::vector<double>& node_edge_m);
 
 }  // namespace tightfit

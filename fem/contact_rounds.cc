@@ -23,11 +23,36 @@ std::string format_residuals(const std::vector<double>& values) {
 ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
                              const FemParameters& parameters)
     : pattern_(pattern), problem_(problem), parameters_(parameters) {
-  const double h = pattern.mean_edge_m;
-  const double k_Pa_per_m = parameters.penalty_factor * problem.law->stiffness_scale() / (h * h);
-  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(pattern.mesh, pattern.edge_index,
-                                                   parameters.element_degree, k_Pa_per_m);
+  const std::vector<double> area_m2 =
+      nodal_rest_areas_m2(pattern.mesh, pattern.edge_index, parameters.element_degree);
+  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(
+      area_m2, parameters.penalty_factor * problem.law->stiffness_scale(), pattern.node_edge_m);
+  nodes_.friction =
+      FrictionAnchors(problem.friction_coefficient, problem.tangential_stiffness_Pa_per_m, area_m2);
   nodes_.multiplier_N.assign(pattern.n_nodes(), 0.0);
+}
+
+void ContactRounds::start_from(const dealii::Vector<double>& x) {
+  n_history_ = 0;
+  friction_force_N_.assign(pattern_.n_nodes(), Vec3::Zero());
+  n_slipping_ = 0;
+  std::vector<Vec3> nodes(pattern_.n_nodes());
+  for (int node = 0; node < pattern_.n_nodes(); ++node)
+    nodes[node] = pattern_.node_position(x, node);
+  nodes_.friction.place(*problem_.body, nodes);
+}
+
+void ContactRounds::commit_friction(const dealii::Vector<double>& x) {
+  if (!nodes_.friction.active()) return;
+  n_slipping_ = 0;
+  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+    const Vec3 p = pattern_.node_position(x, node);
+    const FrictionResponse r = nodes_.friction.response(
+        node, *problem_.body, p, problem_.body->query(p), std::max(0.0, nodes_.multiplier_N[node]));
+    nodes_.friction.commit(node, r);
+    friction_force_N_[node] = r.force_N;
+    n_slipping_ += r.slipping;
+  }
 }
 
 void ContactRounds::secant_predictor(const LoadStep& step, dealii::Vector<double>& x) {
@@ -110,6 +135,7 @@ ContactRoundsResult ContactRounds::solve(const LoadStep& step, NewtonSolver& new
                        residual_N, newton.tolerance_N());
   if (had_contact_ && result.n_active == 0)
     throw_step_failure(step, "contact lost", residual_N, newton.tolerance_N());
+  commit_friction(x);
   had_contact_ = had_contact_ || result.n_active > 0;
   if (result.n_active == 0) {
     n_history_ = 0;

@@ -1,7 +1,10 @@
 // The augmented-Lagrangian contact loop of a load step: Newton's method at fixed multipliers,
 // then Uzawa's update (each node's multiplier becomes the contact force just found,
 // contact/nodal_contact.h), repeated until no node in contact is deeper than the gap
-// tolerance. Before the rounds, two predictors choose the start (they change the path, never
+// tolerance. With friction the rounds solve one quasi-static increment: every residual takes
+// the return mapping from the anchors of the last accepted state, and the converged step
+// commits the new anchors (contact/friction_anchors.h). Before the rounds, two predictors
+// choose the start (they change the path, never
 // the equilibrium): a secant in alpha through the last two converged steps in contact, and
 // the nodes inside the body moved onto its surface.
 #pragma once
@@ -25,15 +28,21 @@ struct ContactRoundsResult {
 
 class ContactRounds {
  public:
-  // Penalty k = beta Y / h^2 (Pa/m) at every node (contact_nodes.h); multipliers start at 0.
+  // Penalty k_k = beta Y / h_k^2 (Pa/m) at node k, h_k its own edge length (contact_nodes.h);
+  // multipliers start at 0.
   ContactRounds(const PatternMesh& pattern, const Problem& problem,
                 const FemParameters& parameters);
 
   const ContactNodes& nodes() const { return nodes_; }
   // Largest penetration of a node in contact after the last round, m.
   double max_penetration_m() const { return max_penetration_m_; }
-  // The positions were set from outside: the secant has nothing to extrapolate from.
-  void forget_history() { n_history_ = 0; }
+  // The positions were set from outside: the secant has nothing to extrapolate from, and the
+  // friction anchors start at the nodes' closest points (where they stick when they touch).
+  void start_from(const dealii::Vector<double>& x);
+  // With friction: the tangential force on each node at the last accepted state (zero off
+  // contact), N, and how many nodes slipped there.
+  const std::vector<Vec3>& friction_force_N() const { return friction_force_N_; }
+  int n_slipping() const { return n_slipping_; }
 
   // Predicts the start from x, runs the rounds (Newton on `assemble` at fixed multipliers),
   // and records the converged step for the next secant. Throws SolverError when the gap does
@@ -51,6 +60,9 @@ class ContactRounds {
   void contact_predictor(dealii::Vector<double>& x) const;
   // Uzawa's update at every node; returns the number of nodes in contact.
   int update_multipliers(const dealii::Vector<double>& x);
+  // Keeps each node's anchor of the accepted state x (after update_multipliers, whose
+  // multipliers are the normal forces x was in equilibrium with) and its friction force.
+  void commit_friction(const dealii::Vector<double>& x);
 
   const PatternMesh& pattern_;
   const Problem& problem_;
@@ -63,6 +75,8 @@ class ContactRounds {
   std::array<double, 2> history_alpha_{};
   std::array<dealii::Vector<double>, 2> history_x_;
   std::array<std::vector<double>, 2> history_multiplier_N_;
+  std::vector<Vec3> friction_force_N_;
+  int n_slipping_ = 0;
 };
 
 }  // namespace tightfit

@@ -16,6 +16,7 @@
 #include <petscsys.h>
 
 #include <chrono>
+#include <ctime>
 #include <sstream>
 
 namespace tightfit {
@@ -40,9 +41,21 @@ void start_mpi_and_petsc() {
   if (!petsc_started) PetscInitializeNoArguments();
 }
 
-const Problem& checked(const Problem& problem) {
+const Problem& checked(const Problem& problem, const FemParameters& parameters) {
   if (!problem.mesh || !problem.law || !problem.body)
     throw std::invalid_argument("fem backend: the problem needs a mesh, a law and a body");
+  if (problem.friction_coefficient > 0.0) {
+    // Friction's tangent is unsymmetric (contact/coulomb_friction.h): CG cannot take it.
+    if (parameters.linear_solver == LinearSolverKind::cg_amg)
+      throw std::invalid_argument(
+          "Finite elements/Linear solver = cg-amg: Contact/Friction coefficient > 0 makes the "
+          "tangent unsymmetric; use direct (MUMPS LU) or gmres-amg");
+    if (parameters.element_degree != 1)
+      throw std::invalid_argument(
+          "Finite elements/Element degree = " + std::to_string(parameters.element_degree) +
+          ": friction is applied with linear triangles only (degree 1); set it to 1 or "
+          "Contact/Friction coefficient to 0");
+  }
   return problem;
 }
 
@@ -51,10 +64,11 @@ const Problem& checked(const Problem& problem) {
 class FemBackend::Implementation {
  public:
   Implementation(const Problem& problem, const FemParameters& parameters)
-      : problem_(checked(problem)),
+      : problem_(checked(problem, parameters)),
         parameters_(parameters),
         pattern_(problem_, parameters.element_degree, comm_),
-        assembly_(pattern_, problem_, comm_),
+        // The exact (unsymmetric) contact tangent unless CG solves the systems.
+        assembly_(pattern_, problem_, parameters.linear_solver == LinearSolverKind::cg_amg, comm_),
         newton_(pattern_, parameters, problem.law->stiffness_scale() * pattern_.mean_edge_m,
                 problem.law->stiffness_scale(), comm_),
         contact_(pattern_, problem_, parameters) {
@@ -71,7 +85,7 @@ class FemBackend::Implementation {
     if (static_cast<int>(positions_m.size()) != problem_.mesh->n_vertices)
       throw std::invalid_argument("fem backend: set_positions needs one position per vertex");
     x_ = pattern_.dof_positions(positions_m);
-    contact_.forget_history();
+    contact_.start_from(x_);
     build_constraints_and_system(pattern_, problem_, x_, comm_, system_);
     // A new matrix: its pattern may differ, so the next solve analyses it afresh.
     newton_.pattern_changed();
@@ -94,6 +108,8 @@ class FemBackend::Implementation {
 
 StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   const auto start = std::chrono::steady_clock::now();
+  // This rank's CPU time too: on a shared machine the wall time says little.
+  const std::clock_t cpu_start = std::clock();
   StepReport report;
   report.tolerance_N = newton_.tolerance_N();
   NewtonLog& log = log_ = NewtonLog{};
@@ -106,7 +122,8 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   report.iterations = rounds.newton_iterations;
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
   output_ = surface_output(pattern_, assembly_, *problem_.body, x_, contact_.nodes().multiplier_N,
-                           step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{});
+                           step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{},
+                           contact_.friction_force_N());
 
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.rounds.size()
@@ -119,12 +136,15 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   if (log.n_shifted_solves > 0) detail << "; " << log.n_shifted_solves << " shifted tangents";
   detail << "; max gap " << contact_.max_penetration_m() << " m; " << rounds.n_active
          << " in contact";
+  if (contact_.nodes().friction.active()) detail << ", " << contact_.n_slipping() << " slipping";
   if (parameters_.element_degree != 1)
     detail << "; vertex forces are the recovered traction (degree " << parameters_.element_degree
            << ")";
-  report.detail = detail.str();
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  detail << "; " << report.wall_seconds << " s ("
+         << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
+  report.detail = detail.str();
   return report;
 }
 

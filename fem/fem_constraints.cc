@@ -56,10 +56,9 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
                            pattern.node_constrained.directions(node), constraints);
   const RigidMotionPin pin =
       rigid_motion_pin(*problem.body, pattern.vertex_positions(x), pattern.node_constrained,
-                       !problem.constraints.empty());
-  if (pin.vertex >= 0)
-    constrain_directions(pattern.vertex_dofs[pattern.master[pin.vertex]], pin.directions,
-                         constraints);
+                       problem.friction_coefficient > 0.0);
+  for (const RigidMotionPin::Pin& p : pin.pins)
+    constrain_directions(pattern.vertex_dofs[pattern.master[p.vertex]], p.directions, constraints);
   constraints.close();
 
   // Every rank holds the whole (small) mesh: the pattern is built from all cells, each rank

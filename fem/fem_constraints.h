@@ -1,6 +1,6 @@
 // The constraints on the Newton increments: every copy of a seam node follows the copy that
 // carries it, constrained nodes (held groups, fixed groups) keep their coordinates along their
-// directions, and one vertex is pinned against the body's free rigid motions
+// directions, and vertices are pinned against the body's free rigid motions
 // (rigid_motion_pin.h). They fix the tangent's sparsity pattern, so the system is rebuilt
 // with them.
 #pragma once

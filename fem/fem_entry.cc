@@ -8,9 +8,11 @@ namespace tightfit {
 BackendEntry fem_backend_entry() {
   BackendEntry entry;
   entry.name = "fem";
+  entry.applies_friction = true;
   entry.description =
       "Finite-element membrane (deal.II + PETSc): Newton's method on the static equilibrium, "
-      "augmented-Lagrangian contact, seams as constraints; runs under mpirun.";
+      "augmented-Lagrangian contact with Coulomb friction, seams as constraints; runs under "
+      "mpirun.";
   entry.declare_parameters = [](dealii::ParameterHandler& prm) {
     FemParameters::declare_parameters(prm);
   };

@@ -38,12 +38,13 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "the contact traction recovered on the curved surface.");
   prm.declare_entry("Linear solver", to_string(d.linear_solver),
                     Selection("direct|cg-amg|gmres-amg"),
-                    "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (small "
-                    "meshes; its symbolic analysis is reused while the pattern holds); 'cg-amg' "
-                    "is conjugate gradients preconditioned by BoomerAMG (large meshes); "
-                    "'gmres-amg' is GMRES with BoomerAMG. When CG meets an indefinite tangent it "
-                    "switches to GMRES, and GMRES to MUMPS, noted in the step's log line. PETSc "
-                    "options with the prefix fem_ tune the Krylov methods.");
+                    "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (its "
+                    "symbolic analysis is reused while the pattern holds; the fastest at every "
+                    "size measured, up to 96600 vertices); 'cg-amg' is conjugate gradients "
+                    "preconditioned by BoomerAMG; 'gmres-amg' is GMRES with BoomerAMG. When CG "
+                    "meets an indefinite tangent it switches to GMRES, and GMRES to MUMPS, noted "
+                    "in the step's log line. PETSc options with the prefix fem_ tune every one "
+                    "of them (-fem_pc_type, -fem_mat_mumps_icntl_14, ...).");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
                     "Krylov solvers stop when the residual falls below eta times the right-hand "
                     "side, eta = 0.9 (|R_k|/|R_k-1|)^2 clamped to [this value, 1e-2] (inexact "
@@ -53,8 +54,9 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     Integer(1, 100000), "Krylov iteration limit per Newton step (count).");
   prm.declare_entry("Residual tolerance", "1e-10", Double(1e-15, 1e-2),
                     "Newton stops when the largest residual force on a free degree of freedom is "
-                    "below this fraction of Y h, the law's stiffness scale (N/m) times the mean "
-                    "rest edge length (m): dimensionless.");
+                    "below this fraction of Y h_k, the law's stiffness scale (N/m) times the rest "
+                    "edge length of its node (the mean of the edges meeting there, m): "
+                    "dimensionless.");
   prm.declare_entry("Maximum Newton iterations", std::to_string(d.max_newton_iterations),
                     Integer(1, 1000),
                     "Newton iterations per augmented-Lagrangian round before the step fails "
@@ -63,11 +65,13 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Backtrack along each Newton direction until the residual norm decreases.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");
-  prm.declare_entry("Penalty factor", "100", Double(1e-3, 1e12),
-                    "Contact penalty k = beta Y / h^2 in Pa/m (Y the law's stiffness scale, h the "
-                    "mean rest edge length): this beta, dimensionless. Augmented-Lagrangian "
-                    "updates remove its effect on the pressure; it only sets how fast they "
-                    "converge.");
+  prm.declare_entry(
+      "Penalty factor", "100", Double(1e-3, 1e12),
+      "Contact penalty k = beta Y / h_k^2 in Pa/m at each node (Y the law's stiffness "
+      "scale, h_k the mean rest length of the edges meeting there): this beta, dimensionless. "
+      "Augmented-Lagrangian "
+      "updates remove its effect on the pressure; it only sets how fast they "
+      "converge.");
   prm.declare_entry("Maximum augmented Lagrangian iterations",
                     std::to_string(d.max_augmented_lagrangian_iterations), Integer(1, 1000),
                     "Multiplier updates per load step before the step fails (count).");

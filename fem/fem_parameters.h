@@ -26,12 +26,13 @@ struct FemParameters {
   double linear_tolerance = 1e-10;
   int max_linear_iterations = 1000;
   // Newton stops when the largest residual force on a free degree of freedom is below
-  // residual_tolerance * Y * h (Y the law's stiffness scale, N/m; h the mean rest edge, m).
+  // residual_tolerance * Y * h_k (Y the law's stiffness scale, N/m; h_k the rest edge length of
+  // the degree of freedom's node, m: fem/contact_nodes.h).
   double residual_tolerance = 1e-10;
   int max_newton_iterations = 40;
   bool line_search = true;
   int max_line_search_halvings = 10;
-  // Penalty k = beta * Y / h^2 (Pa/m) of the augmented-Lagrangian contact.
+  // Penalty k_k = beta * Y / h_k^2 (Pa/m) of the augmented-Lagrangian contact at node k.
   double penalty_factor = 100.0;
   int max_augmented_lagrangian_iterations = 20;
   // Largest penetration accepted at a vertex in contact, m.

@@ -12,7 +12,8 @@ namespace {
 
 void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& assembly,
                            const RigidBody& body, const dealii::Vector<double>& x,
-                           const std::vector<double>& multiplier_N, FemSurfaceOutput& out) {
+                           const std::vector<double>& multiplier_N,
+                           const std::vector<Vec3>& friction_force_N, FemSurfaceOutput& out) {
   const SimulationMesh& mesh = pattern.mesh;
   const int n = mesh.n_vertices;
   SurfaceState& state = out.state;
@@ -29,6 +30,7 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
     if (multiplier_N[w] <= 0.0) continue;
     state.in_contact[w] = 1;
     state.contact_force_N[w] = multiplier_N[w] * s.outward_normal;
+    if (!friction_force_N.empty()) state.contact_force_N[w] += friction_force_N[w];
     if (area[w] > 0.0) out.contact_traction_Pa[w] = multiplier_N[w] / area[w];
   }
 }
@@ -133,11 +135,12 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
                                 const RigidBody& body, const dealii::Vector<double>& x,
                                 const std::vector<double>& multiplier_N,
-                                const std::vector<Vec3>& gravity_load_N) {
+                                const std::vector<Vec3>& gravity_load_N,
+                                const std::vector<Vec3>& friction_force_N) {
   FemSurfaceOutput out;
   out.state.positions_m = pattern.vertex_positions(x);
   if (pattern.element_degree == 1)
-    fill_from_multipliers(pattern, assembly, body, x, multiplier_N, out);
+    fill_from_multipliers(pattern, assembly, body, x, multiplier_N, friction_force_N, out);
   else
     fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, out);
   return out;

@@ -23,9 +23,12 @@ struct FemSurfaceOutput {
 
 // `gravity_load_N`: per node, the weight the garment carries in this step (empty without
 // gravity); degree 2 needs it to tell the garment's own force from the contact force.
+// `friction_force_N`: per node, the tangential contact force (degree 1 only; zero without
+// friction): it joins the contact force, where the extractor reads it as friction traction.
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
                                 const RigidBody& body, const dealii::Vector<double>& x,
                                 const std::vector<double>& multiplier_N,
-                                const std::vector<Vec3>& gravity_load_N);
+                                const std::vector<Vec3>& gravity_load_N,
+                                const std::vector<Vec3>& friction_force_N);
 
 }  // namespace tightfit

@@ -10,8 +10,27 @@
 namespace tightfit {
 
 MembraneAssembly::MembraneAssembly(const PatternMesh& pattern, const Problem& problem,
-                                   MPI_Comm comm)
-    : pattern_(pattern), problem_(problem), comm_(comm) {}
+                                   bool symmetric_tangent, MPI_Comm comm)
+    : pattern_(pattern), problem_(problem), symmetric_tangent_(symmetric_tangent), comm_(comm) {}
+
+bool MembraneAssembly::node_contact(int node, const Vec3& p, const ContactNodes& contact,
+                                    bool with_tangent, Vec3& force_N,
+                                    Mat3& stiffness_N_per_m) const {
+  const NodalContact c = nodal_contact(*problem_.body, p, contact.multiplier_N[node],
+                                       contact.penalty_N_per_m[node], with_tangent);
+  force_N = c.force_N;
+  stiffness_N_per_m = symmetric_tangent_ ? c.stiffness_N_per_m : c.exact_stiffness_N_per_m;
+  if (c.multiplier_N <= 0.0) return false;
+  if (contact.friction.active()) {
+    // Friction's cone mu lambda moves with the node: its tangent has mu s (dlambda/dx)^T.
+    const FrictionResponse r =
+        contact.friction.response(node, *problem_.body, p, problem_.body->query(p), c.multiplier_N,
+                                  c.multiplier_gradient_N_per_m);
+    force_N += r.force_N;
+    stiffness_N_per_m += r.stiffness_N_per_m;
+  }
+  return true;
+}
 
 void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<double>& x,
                                    Eigen::VectorXd& gradient, Eigen::MatrixXd* hessian) const {
@@ -86,15 +105,16 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
   for (int node = 0; node < pattern_.n_nodes(); ++node) {
     const DofTriple& d = pattern_.node_copies[node].front();
     if (!pattern_.owned_dofs.is_element(d[0])) continue;
-    const NodalContact c =
-        nodal_contact(*problem_.body, pattern_.node_position(x, node), contact.multiplier_N[node],
-                      contact.penalty_N_per_m[node], with_tangent);
-    if (c.multiplier_N <= 0.0 && tangent_shift_N_per_m <= 0.0) continue;
+    Vec3 force_N;
+    Mat3 stiffness_N_per_m;
+    const bool touching = node_contact(node, pattern_.node_position(x, node), contact, with_tangent,
+                                       force_N, stiffness_N_per_m);
+    if (!touching && tangent_shift_N_per_m <= 0.0) continue;
     for (int i = 0; i < 3; ++i) {
       vertex_dof_list[i] = d[i];
-      vertex_rhs[i] = c.force_N[i];
+      vertex_rhs[i] = force_N[i];
       for (int j = 0; j < 3; ++j)
-        vertex_matrix(i, j) = c.stiffness_N_per_m(i, j) + (i == j ? tangent_shift_N_per_m : 0.0);
+        vertex_matrix(i, j) = stiffness_N_per_m(i, j) + (i == j ? tangent_shift_N_per_m : 0.0);
     }
     if (with_tangent)
       system.constraints.distribute_local_to_global(vertex_matrix, vertex_rhs, vertex_dof_list,
@@ -155,11 +175,12 @@ void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
     }
   }
   for (int node = 0; node < n; ++node) {
-    const NodalContact c =
-        nodal_contact(*problem_.body, node_positions_m[node], contact.multiplier_N[node],
-                      contact.penalty_N_per_m[node], true);
-    residual_N.segment<3>(3 * node) -= c.force_N;
-    tangent_N_per_m.block<3, 3>(3 * node, 3 * node) += c.stiffness_N_per_m;
+    Vec3 force_N;
+    Mat3 stiffness_N_per_m;
+    if (!node_contact(node, node_positions_m[node], contact, true, force_N, stiffness_N_per_m))
+      continue;
+    residual_N.segment<3>(3 * node) -= force_N;
+    tangent_N_per_m.block<3, 3>(3 * node, 3 * node) += stiffness_N_per_m;
   }
 }
 

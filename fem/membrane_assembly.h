@@ -1,7 +1,8 @@
 // The residual R(x) = dPi/dx - f_contact of the membrane on the body and its tangent dR/dx:
 // the membrane's energy gradient and Hessian cell by cell (membrane_kernel.h on the pattern's
-// quadrature) and the nodal augmented-Lagrangian contact (contact/nodal_contact.h) at every
-// node, assembled into the Newton system with its constraints.
+// quadrature) and the nodal augmented-Lagrangian contact (contact/nodal_contact.h) with
+// Coulomb friction (contact/friction_anchors.h) at every node, assembled into the Newton system
+// with its constraints.
 #pragma once
 
 #include "fem/contact_nodes.h"
@@ -14,7 +15,10 @@ namespace tightfit {
 
 class MembraneAssembly {
  public:
-  MembraneAssembly(const PatternMesh& pattern, const Problem& problem, MPI_Comm comm);
+  // `symmetric_tangent`: the contact's tangent symmetrised (contact/nodal_contact.h), for CG;
+  // otherwise its exact derivative (unsymmetric on a mesh body, and with friction).
+  MembraneAssembly(const PatternMesh& pattern, const Problem& problem, bool symmetric_tangent,
+                   MPI_Comm comm);
 
   // system.rhs = -R(x), constrained; system.tangent = dR/dx when with_tangent. The tangent
   // of every node's contact gets `tangent_shift_N_per_m` on its diagonal (zero: nodes out of
@@ -49,8 +53,15 @@ class MembraneAssembly {
   // rho_A g: the weight per unit rest area, N/m^2 (zero without a fabric).
   Vec3 weight_per_rest_area() const;
 
+  // The contact force on a node at p (normal, and with friction the return mapping from the
+  // anchors of the last accepted state) and, with_tangent, minus its derivative. Returns false
+  // when the node is out of contact (no force, no stiffness).
+  bool node_contact(int node, const Vec3& p, const ContactNodes& contact, bool with_tangent,
+                    Vec3& force_N, Mat3& stiffness_N_per_m) const;
+
   const PatternMesh& pattern_;
   const Problem& problem_;
+  bool symmetric_tangent_;
   MPI_Comm comm_;
 };
 

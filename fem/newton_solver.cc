@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace tightfit {
@@ -26,7 +27,24 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
       stiffness_scale_N_per_m_(stiffness_scale_N_per_m),
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
-                                                         parameters.max_linear_iterations, comm)) {}
+                                                         parameters.max_linear_iterations, comm)) {
+  dof_weight_.assign(pattern.dof_handler.n_dofs(), 1.0);
+  for (int node = 0; node < pattern.n_nodes(); ++node)
+    for (const DofTriple& copy : pattern.node_copies[node])
+      for (const GlobalDof i : copy)
+        dof_weight_[i] = pattern.mean_edge_m / pattern.node_edge_m[node];
+}
+
+double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
+  double largest = 0.0, sum = 0.0;
+  for (const GlobalDof i : pattern_.owned_dofs) {
+    const double r = std::abs(system.rhs(i)) * dof_weight_[i];
+    largest = std::max(largest, r);
+    sum += r;  // std::max drops NaN; the sum keeps it
+  }
+  largest = std::isfinite(sum) ? largest : std::numeric_limits<double>::quiet_NaN();
+  return dealii::Utilities::MPI::max(largest, comm_);
+}
 
 void NewtonSolver::fail(const LoadStep& step, const std::string& what, double residual_N) const {
   throw_step_failure(step, what, residual_N, tolerance_N());
@@ -65,7 +83,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
   std::vector<double>& history_N = log.residual_N;
   assemble(x, true);
   for (int iteration = 0;; ++iteration) {
-    const double residual_N = system.rhs.linfty_norm();
+    const double residual_N = scaled_residual_N(system);
     history_N.push_back(residual_N);
     if (!std::isfinite(residual_N)) fail(step, "the residual is not finite", residual_N);
     if (residual_N <= tolerance) return iteration;

@@ -23,7 +23,7 @@ namespace tightfit {
 
 // What a load step's Newton solves did, for its report.
 struct NewtonLog {
-  std::vector<double> residual_N;      // largest residual component per iteration
+  std::vector<double> residual_N;      // per iteration, max_k |R_k| h / h_k (the stop rule's)
   std::vector<int> krylov_iterations;  // per linear solve (0 for the direct solver)
   std::string notes;                   // linear solver switches
   int n_shifted_solves = 0;            // tangents shifted after failed line searches
@@ -34,8 +34,10 @@ class NewtonSolver {
   // Fills system.rhs = -R(x) (constrained), and system.tangent = dR/dx when asked.
   using Assembler = std::function<void(const dealii::Vector<double>& x, bool with_tangent)>;
 
-  // force_scale_N: Y h, the stop rule's force unit; the step is capped at half of h =
-  // pattern.mean_edge_m.
+  // force_scale_N: Y h, the stop rule's force unit (h = pattern.mean_edge_m); the step is
+  // capped at half of h. On a graded mesh each node's residual counts relative to its own
+  // edge h_k (pattern.node_edge_m): the stop rule reads max_k |R_k| h / h_k, the force the
+  // same strain error would leave on a node of mean size.
   NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters, double force_scale_N,
                double stiffness_scale_N_per_m, MPI_Comm comm);
 
@@ -52,6 +54,8 @@ class NewtonSolver {
             dealii::Vector<double>& x, NewtonLog& log);
 
  private:
+  // max over the rank's DoFs and every rank of |rhs_i| h / h_k(i), N (see the constructor).
+  double scaled_residual_N(const NewtonSystem& system) const;
   // Solves tangent * increment = rhs; returns the Krylov iterations (0 for direct).
   int solve_linear_system(const LoadStep& step, NewtonSystem& system, NewtonLog& log);
   // The increment on every DoF of every rank, constraints distributed.
@@ -67,6 +71,8 @@ class NewtonSolver {
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
+  // Per DoF, h / h_k of the node it belongs to (every copy of a seam node alike).
+  std::vector<double> dof_weight_;
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;
 };

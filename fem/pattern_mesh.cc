@@ -1,5 +1,6 @@
 #include "fem/pattern_mesh.h"
 
+#include "fem/contact_nodes.h"
 #include "fem/panel_triangles.h"
 
 #include <deal.II/fe/fe_simplex_p.h>
@@ -62,6 +63,7 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm comm)
   for (const auto& r : mesh.rest_triangles)
     edge_sum += (r[1] - r[0]).norm() + (r[2] - r[1]).norm() + (r[0] - r[2]).norm();
   mean_edge_m = edge_sum / (3.0 * mesh.rest_triangles.size());
+  node_edge_m = node_edge_lengths_m(mesh, edge_ends, element_degree);
 }
 
 std::vector<Mat2> PatternMesh::build_triangulation() {

@@ -97,6 +97,9 @@ class PatternMesh {
 
   // Mean rest edge length over the triangles' edges (an interior edge counted twice), m.
   double mean_edge_m = 0.0;
+  // Per node, its own rest edge length h_k (contact_nodes.h), m: it sets the node's contact
+  // penalty and its force unit in Newton's stop rule.
+  std::vector<double> node_edge_m;
 
  private:
   // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.

@@ -43,23 +43,25 @@ void PetscLinearSolver::configure() {
       check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
       check(PCSetType(pc, PCLU), "PCSetType");
       check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-      return;
+      break;
     case LinearSolverKind::cg_amg:
       check(KSPSetType(ksp_, KSPCG), "KSPSetType");
       break;
     case LinearSolverKind::gmres_amg:
       check(KSPSetType(ksp_, KSPGMRES), "KSPSetType");
       check(KSPGMRESSetRestart(ksp_, 100), "KSPGMRESSetRestart");
+      check(KSPSetPCSide(ksp_, PC_RIGHT), "KSPSetPCSide");
       break;
   }
-  check(PCSetType(pc, PCHYPRE), "PCSetType");
-  check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
-  // The stopping rule on the true residual, ||b - A x|| <= tol ||b||, for both methods.
-  check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-  if (kind_ == LinearSolverKind::gmres_amg) check(KSPSetPCSide(ksp_, PC_RIGHT), "KSPSetPCSide");
-  check(KSPSetTolerances(ksp_, 1e-10, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
+  if (kind_ != LinearSolverKind::direct) {
+    check(PCSetType(pc, PCHYPRE), "PCSetType");
+    check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+    // The stopping rule on the true residual, ||b - A x|| <= tol ||b||, for both methods.
+    check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    check(KSPSetTolerances(ksp_, 1e-10, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
+  }
   // PETSc options with the prefix fem_ (PETSC_OPTIONS="-fem_pc_hypre_boomeramg_strong_threshold
-  // 0.5", say) tune the Krylov methods without a rebuild.
+  // 0.5" or "-fem_mat_mumps_icntl_14 50", say) tune every solver without a rebuild.
   check(KSPSetOptionsPrefix(ksp_, "fem_"), "KSPSetOptionsPrefix");
   check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
 }

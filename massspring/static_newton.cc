@@ -16,7 +16,16 @@ struct StaticNewton::Factorisation {
 StaticNewton::StaticNewton() : factorisation_(std::make_unique<Factorisation>()) {
   // A matrix that is not positive definite is expected (the pseudo time step then shrinks):
   // no warning on the console.
-  factorisation_->llt.cholmod().print = 0;
+  cholmod_common& common = factorisation_->llt.cholmod();
+  common.print = 0;
+  // Fill-reducing ordering: the less fill of approximate minimum degree and METIS's nested
+  // dissection, chosen once per pattern. On a garment (a surface mesh, a planar graph)
+  // nested dissection bounds the flops by O(N^1.5) (George 1973) and beats minimum degree: on the
+  // 8460-vertex tube 1.31e9 flops a factorisation against AMD's 2.82e9 (CHOLMOD's default
+  // strategy keeps AMD there).
+  common.nmethods = 2;
+  common.method[0].ordering = CHOLMOD_AMD;
+  common.method[1].ordering = CHOLMOD_METIS;
 }
 StaticNewton::~StaticNewton() = default;
 

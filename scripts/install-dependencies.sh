@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs what tightfit needs from Debian 12's packages, skipping what is already installed.
 # Safe to run any number of times. `--fuzz` adds clang and its libFuzzer and sanitizer runtimes
-# for scripts/fuzz.sh (not needed to build, test or run tightfit).
+# for scripts/fuzz.sh (not needed to build, test or run tightfit). `--fast-blas` adds OpenBLAS
+# (single-threaded), which Debian then uses for libblas.so.3 system-wide: CHOLMOD's and MUMPS's
+# dense kernels, two to three times faster on fine meshes (docs/performance.md, Scaling); the
+# test suite passes with either BLAS.
 set -euo pipefail
 
 packages=(
@@ -14,9 +17,13 @@ packages=(
   libgtest-dev libbenchmark-dev  # tests and benchmarks
   gnuplot-nox                    # plots
 )
-if [ "${1:-}" = "--fuzz" ]; then
-  packages+=(clang-14 libclang-rt-14-dev)  # libFuzzer, ASan and UBSan runtimes
-fi
+for option in "$@"; do
+  case $option in
+    --fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;  # libFuzzer, ASan and UBSan runtimes
+    --fast-blas) packages+=(libopenblas0-serial) ;;     # optimised BLAS, one thread
+    *) echo "install-dependencies.sh: unknown option '$option' (--fuzz, --fast-blas)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for package in "${packages[@]}"; do

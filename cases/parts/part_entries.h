@@ -10,6 +10,7 @@ namespace tightfit {
 
 // Garments (Garment/Kind).
 PartEntry<GarmentMaker> tube_garment_entry();
+PartEntry<GarmentMaker> tapered_tube_garment_entry();
 PartEntry<GarmentMaker> sheet_garment_entry();
 PartEntry<GarmentMaker> pattern_file_garment_entry();
 
@@ -33,5 +34,6 @@ PartEntry<MeasurementMaker> air_pack_sensors_measurement_entry();
 PartEntry<MeasurementMaker> stamps_measurement_entry();
 PartEntry<MeasurementMaker> regions_measurement_entry();
 PartEntry<MeasurementMaker> pictures_measurement_entry();
+PartEntry<MeasurementMaker> compression_class_measurement_entry();
 
 }  // namespace tightfit

@@ -24,12 +24,24 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
     prm.declare_double("Radius", 0.1, 0, ParameterTree::unbounded,
                        "Radius of the tube's circle at the start (m): larger than the body "
                        "wherever the tube lies, so that it shrinks onto it.");
+    prm.declare_double("Stretch", 0, 0, ParameterTree::unbounded,
+                       "If positive, each ring of the tube is placed at this many times its own "
+                       "rest radius (its relaxed girth over 2 pi) instead of at Radius: a tapered "
+                       "tube stretched evenly along its length (-). 0: every ring at Radius.");
+    prm.declare_double("Clearance", 0, 0, ParameterTree::unbounded,
+                       "If positive, each ring is centred on the centroid of the body's section "
+                       "in its plane (normal to Axis, the section round the axis) and placed this "
+                       "far outside that section's farthest point, instead of Radius and Stretch: "
+                       "a tube that follows a bent limb (m; docs/stocking.md).");
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
     const Vec3 centre = prm.get_vector("Centre");
     const std::string axis_text = prm.get("Axis");
     const double radius_m = prm.get_double("Radius");
-    if (!(radius_m > 0)) throw std::invalid_argument("Radius must be positive (m)");
+    const double stretch = prm.get_double("Stretch");
+    const double clearance_m = prm.get_double("Clearance");
+    if (!(radius_m > 0) && !(stretch > 0) && !(clearance_m > 0))
+      throw std::invalid_argument("Radius must be positive (m)");
     std::optional<Vec3> axis;
     if (axis_text != "body") {
       axis = prm.get_vector("Axis");
@@ -41,7 +53,16 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
         throw std::invalid_argument("Placement/Tube round axis/Axis = body, but the body (" +
                                     scenario.body->describe() +
                                     ") has no axis: give a direction x,y,z");
-      return place_tube_round_axis(scenario.garment, scenario.mesh, centre, *direction, radius_m);
+      if (clearance_m > 0) {
+        const DisplayMesh body = scenario.body->body().display_mesh();
+        TriangleSurface surface;
+        surface.vertices_m = body.vertices_m;
+        surface.triangles = body.triangles;
+        return place_tube_round_limb(scenario.garment, scenario.mesh, centre, *direction, surface,
+                                     clearance_m);
+      }
+      return place_tube_round_axis(scenario.garment, scenario.mesh, centre, *direction, radius_m,
+                                   stretch);
     };
   };
   return e;

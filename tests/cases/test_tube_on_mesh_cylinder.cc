@@ -83,7 +83,7 @@ TEST_P(TubeOnMeshCylinder, MeanPressureWithinTheFacetsChordError) {
   EXPECT_LT(shortfall, predicted_max);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, TubeOnMeshCylinder, ::testing::Values("massspring"));
+INSTANTIATE_TEST_SUITE_P(Backends, TubeOnMeshCylinder, ::testing::Values("massspring", "fem"));
 
 }  // namespace
 }  // namespace tightfit

@@ -45,7 +45,8 @@ TEST(NodalContact, StiffnessIsMinusTheForceDerivative) {
 }
 
 // On a cone (symmetric dn/dx) the stiffness is the whole derivative; on a mesh body, whose
-// smooth normal differs from the faces' dg/dx, it is the derivative's symmetric part.
+// smooth normal differs from the faces' dg/dx, it is the derivative's symmetric part, and the
+// exact stiffness the whole derivative.
 TEST(NodalContact, StiffnessOnAConeAndAMeshBody) {
   ConeOptions o;
   o.axis = Vec3(0, 1, 1);
@@ -69,6 +70,18 @@ TEST(NodalContact, StiffnessOnAConeAndAMeshBody) {
   const Mat3 K_fd = minus_force_derivative(body, x);
   EXPECT_LT((c.stiffness_N_per_m - 0.5 * (K_fd + K_fd.transpose())).norm(),
             1e-5 * c.stiffness_N_per_m.norm());
+  // The unsymmetrised one is the whole derivative, and the multiplier's gradient its own.
+  EXPECT_LT((c.exact_stiffness_N_per_m - K_fd).norm(), 1e-5 * c.stiffness_N_per_m.norm());
+  EXPECT_GT((c.exact_stiffness_N_per_m - c.stiffness_N_per_m).norm(),
+            1e-3 * c.stiffness_N_per_m.norm());
+  const double h = 1e-7;
+  for (int j = 0; j < 3; ++j) {
+    const Vec3 e = h * Vec3::Unit(j);
+    const double dlambda = (nodal_contact(body, x + e, multiplier, penalty, false).multiplier_N -
+                            nodal_contact(body, x - e, multiplier, penalty, false).multiplier_N) /
+                           (2 * h);
+    EXPECT_NEAR(c.multiplier_gradient_N_per_m[j], dlambda, 1e-5 * penalty) << "component " << j;
+  }
 }
 
 }  // namespace

@@ -80,6 +80,13 @@ TEST(ConstrainedDirections, BadGroupsAndDirectionsAreNamed) {
   EXPECT_THROW(ConstrainedDirections({outside}, mesh.n_vertices), std::invalid_argument);
 }
 
+TEST(ConstrainedDirections, GroupAllHoldsEveryVertex) {
+  const SimulationMesh mesh = weld(make_tube_garment("T", 0.157, 0.24, 2, MeshSpacing{}));
+  const VertexConstraint all = held_along(mesh, "all", Vec3::UnitZ());
+  ASSERT_EQ(static_cast<int>(all.vertices.size()), mesh.n_vertices);
+  for (int v = 0; v < mesh.n_vertices; ++v) EXPECT_EQ(all.vertices[v], v);
+}
+
 TEST(RingCircumference, TubesHaveTheirPanelsWidthsOtherGarmentsNone) {
   EXPECT_NEAR(ring_circumference_m(make_tube_garment("T", 0.157, 0.24, 2, MeshSpacing{})), 0.314,
               1e-12);

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tightfit::testing {
@@ -30,7 +31,11 @@ struct TubeCase {
 
   // The "4 5T" garment (two panels 18.78 cm x 24 cm) at the given mesh spacing.
   TubeCase(const std::string& law_name, EndCondition ends, MeshSpacing spacing = MeshSpacing{})
-      : garment(make_tube_garment("4 5T", 0.1878, 0.24, 2, spacing)), mesh(weld(garment)) {
+      : TubeCase(law_name, ends, make_tube_garment("4 5T", 0.1878, 0.24, 2, spacing)) {}
+
+  // Any tube sewn into a ring (ring_circumference_m), 0.24 m high.
+  TubeCase(const std::string& law_name, EndCondition ends, Garment tube_garment)
+      : garment(std::move(tube_garment)), mesh(weld(garment)) {
     law = make_material_law(law_name, fabric);
     rest_radius_m = ring_circumference_m(garment) / (2.0 * M_PI);
     cylinder = std::make_unique<Cylinder>(Vec3::Zero(), Vec3::UnitZ(), rest_radius_m);
