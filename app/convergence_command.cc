@@ -39,8 +39,7 @@ int convergence_command(const CommandLine& cl, std::ostream& out) {
   CaseFile file;
   file.read(cl.case_files.front(), cl.overrides);
   CaseParameters parameters = file.parameters();
-  parameters.output.rank = cl.rank;
-  parameters.output.n_ranks = cl.n_ranks;
+  share_output_by_rank(cl, parameters.output);
   const std::string dir =
       output_directory_for(cl, cl.case_files.front(), parameters.output.directory + "_convergence");
   std::vector<NamedBackendFactory> backends;

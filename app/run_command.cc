@@ -17,6 +17,12 @@ std::string output_directory_for(const CommandLine& cl, const std::string& case_
   return (std::filesystem::path(cl.output_dir) / std::filesystem::path(case_file).stem()).string();
 }
 
+void share_output_by_rank(const CommandLine& cl, OutputSettings& output) {
+  output.rank = cl.rank;
+  output.n_ranks = cl.n_ranks;
+  output.end_every_rank = cl.end_every_rank;
+}
+
 int run_command(const CommandLine& cl, std::ostream& out) {
   // Read and check every case before running any, so a typo in the second file does not
   // surface after the first has run for minutes.
@@ -26,9 +32,7 @@ int run_command(const CommandLine& cl, std::ostream& out) {
     files.push_back(std::make_unique<CaseFile>());
     files.back()->read(path, cl.overrides);
     CaseParameters parameters = files.back()->parameters();
-    parameters.output.rank = cl.rank;
-    parameters.output.n_ranks = cl.n_ranks;
-    parameters.output.end_every_rank = cl.end_every_rank;
+    share_output_by_rank(cl, parameters.output);
     setups.push_back(make_scenario(parameters));
   }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/command_line.h"
+#include "cases/case_parameters.h"
 
 #include <iosfwd>
 
@@ -15,5 +16,9 @@ int run_command(const CommandLine& command_line, std::ostream& out);
 // case's Output/Directory.
 std::string output_directory_for(const CommandLine& command_line, const std::string& case_file,
                                  const std::string& from_case);
+
+// This process among the MPI ranks of the run, and how an error of its own ends them all
+// (OutputSettings::rank, n_ranks, end_every_rank): every command that runs a case sets them.
+void share_output_by_rank(const CommandLine& command_line, OutputSettings& output);
 
 }  // namespace tightfit

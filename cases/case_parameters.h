@@ -11,6 +11,7 @@
 #include "core/mesh_geometry.h"
 #include "core/rectangle_panel.h"
 
+#include <exception>
 #include <functional>
 #include <iosfwd>
 #include <memory>
@@ -99,6 +100,17 @@ struct OutputSettings {
   // objects, whose destructors would wait for the others (MPI_Abort). Unset: the error is
   // thrown as usual.
   std::function<void(const std::string&)> end_every_rank;
+  // Runs `write`, output of this rank alone: with several ranks an exception from it ends
+  // every rank (end_every_rank) with its message; otherwise it is thrown on.
+  template <typename Write>
+  void on_this_rank(Write&& write) const {
+    try {
+      write();
+    } catch (const std::exception& e) {
+      if (n_ranks > 1 && end_every_rank) end_every_rank(e.what());
+      throw;
+    }
+  }
 };
 
 struct CaseParameters {

@@ -107,24 +107,25 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   scenario.prepare_step(0);
   backend->set_positions(scenario.initial_positions());
 
+  // Opening the files is this rank's alone: under MPI the others must not be left waiting.
   std::unique_ptr<CsvTable> table;
-  if (write_tables) {
-    std::vector<std::string> columns = pressure_table_columns();
-    columns.insert(columns.end(), result.columns.begin(), result.columns.end());
-    table = std::make_unique<CsvTable>(path("pressure.csv"), columns);
-  }
-  // The solver's own account of each step (Newton residuals and Krylov iterations, RK4
-  // frames and time step), which the progress line only counts.
   std::ofstream solver_log;
-  if (write_tables) {
-    solver_log.open(path("solver.log"));
-    solver_log << "# " << result.backend << ": the solver's report of each load step\n";
-  }
   std::unique_ptr<PvdWriter> garment_series, body_series;
-  if (write_series) {
-    garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
-    body_series = std::make_unique<PvdWriter>(path("body.pvd"));
-  }
+  output.on_this_rank([&] {
+    if (write_tables) {
+      std::vector<std::string> columns = pressure_table_columns();
+      columns.insert(columns.end(), result.columns.begin(), result.columns.end());
+      table = std::make_unique<CsvTable>(path("pressure.csv"), columns);
+      // The solver's own account of each step (Newton residuals and Krylov iterations, RK4
+      // frames and time step), which the progress line only counts.
+      solver_log.open(path("solver.log"));
+      solver_log << "# " << result.backend << ": the solver's report of each load step\n";
+    }
+    if (write_series) {
+      garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
+      body_series = std::make_unique<PvdWriter>(path("body.pvd"));
+    }
+  });
 
   auto stop = [&](const std::string& why) {
     result.failure = why;
@@ -147,7 +148,8 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       break;
     }
     const StepMeasurement& m = result.steps.back();
-    try {
+    // Writing is this rank's alone: under MPI the others must not be left waiting.
+    output.on_this_rank([&] {
       if (table) table->write_row(pressure_row(m));
       for (const auto& measurement : measurements) measurement->after_step(scenario, m, files);
       if (solver_log.is_open())
@@ -174,15 +176,11 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
           write_body_vtu(path(name), scenario.body->body().display_mesh());
         body_series->add(m.alpha, name);
       }
-    } catch (const std::exception& e) {
-      // Writing is this rank's alone: under MPI the others must not be left waiting.
-      if (output.n_ranks > 1 && output.end_every_rank) output.end_every_rank(e.what());
-      throw;
-    }
+    });
     print_progress(log, m, scenario.alphas.size());
   }
   for (const auto& measurement : measurements) {
-    measurement->after_run(scenario, result.steps, files);
+    output.on_this_rank([&] { measurement->after_run(scenario, result.steps, files); });
     for (const std::string& f : measurement->file_names()) result.files.push_back(f);
     for (TextTable& t : measurement->summary_tables(scenario, result.steps))
       result.tables.push_back(std::move(t));

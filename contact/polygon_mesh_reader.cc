@@ -25,6 +25,8 @@
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace tightfit {
 namespace {
@@ -91,13 +93,21 @@ BodyMeshError file_error(const std::string& path, int line, const std::string& m
 }
 
 // VTK's OBJ reader takes "v 1 x 0" or "v 0 0" without a word (it reads what it can): every
-// vertex line must hold three numbers.
-void check_obj_vertex_lines(const std::string& path) {
+// vertex line must hold three numbers. It also follows a face's texture and normal indices
+// ("f 1/2/3 ...") without checking them: one past the file's "vt" lines is a null pointer
+// read (found by fuzz_body_mesh_obj), so every index of a face must name a line the file has.
+void check_obj_lines(const std::string& path) {
   std::ifstream in(path);
   std::string line;
+  std::map<std::string, long> count;  // "v", "vt", "vn" lines
+  std::vector<std::pair<int, std::string>> faces;
   for (int number = 1; std::getline(in, line); ++number) {
-    if (line.rfind("v ", 0) != 0 && line.rfind("v\t", 0) != 0) continue;
-    std::istringstream words(line.substr(2));
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "v" || keyword == "vt" || keyword == "vn") ++count[keyword];
+    if (keyword == "f") faces.emplace_back(number, line);
+    if (keyword != "v") continue;
     std::string word;
     for (int k = 0; k < 3; ++k) {
       if (!(words >> word))
@@ -106,6 +116,27 @@ void check_obj_vertex_lines(const std::string& path) {
       std::strtod(word.c_str(), &end);
       if (end == word.c_str() || *end != '\0')
         throw file_error(path, number, "'" + word + "' is not a number: '" + line + "'");
+    }
+  }
+  const char* kinds[3] = {"v", "vt", "vn"};
+  for (const auto& [number, face] : faces) {
+    std::istringstream words(face.substr(1));
+    for (std::string corner; words >> corner;) {
+      // "26/": VTK takes the missing index after the slash for one (a null read).
+      if (corner.back() == '/')
+        throw file_error(path, number, "face corner '" + corner + "' ends with '/'");
+      std::istringstream parts(corner);
+      std::string part;
+      for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
+        if (part.empty() && k > 0) continue;  // "1//3": no texture coordinate
+        char* end = nullptr;
+        const long index = std::strtol(part.c_str(), &end, 10);
+        if (end == part.c_str() || *end != '\0' || index < 1 || index > count[kinds[k]])
+          throw file_error(path, number,
+                           "face corner '" + corner + "': '" + part + "' is not one of the " +
+                               std::to_string(count[kinds[k]]) + " '" + kinds[k] +
+                               "' lines (indices count from 1; relative ones are not read)");
+      }
     }
   }
 }
@@ -133,19 +164,36 @@ void check_ply_complete(const std::string& path) {
     std::string keyword;
     words >> keyword;
     if (keyword == "end_header") break;
+    // VTK's reader dereferences a null element on a header line it does not know (found by
+    // fuzz_body_mesh_ply: "pr`perty float y").
+    if (keyword != "ply" && keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
+        keyword != "element" && keyword != "property" && !keyword.empty())
+      throw file_error(path, number,
+                       "'" + keyword + "' is not a PLY header keyword: '" + line + "'");
     if (keyword == "format") words >> format;
     if (keyword == "element") {
       long count = 0;
-      words >> current >> count;
+      std::string more;
+      if (!(words >> current >> count) || (words >> more))
+        throw file_error(path, number, "an element is 'element NAME COUNT': '" + line + "'");
       if (count < 0) throw file_error(path, number, "a negative element count: '" + line + "'");
       if (current == "vertex") n_vertices = count;
       if (current == "face") n_faces = count;
     }
     if (keyword == "property") {
-      std::string type, count_type, index_type;
+      // VTK's reader takes the words it expects without counting them (found by
+      // fuzz_body_mesh_ply: "property list uchar vertex_indices" read past the line).
+      std::string type, count_type, index_type, name, more;
       words >> type;
-      if (type == "list") {
-        words >> count_type >> index_type;
+      const bool list = type == "list";
+      if (list) words >> count_type >> index_type;
+      if (!(words >> name) || (words >> more) || bytes(list ? index_type : type) == 0 ||
+          (list && bytes(count_type) == 0))
+        throw file_error(path, number,
+                         "a property is 'property TYPE NAME' or 'property list COUNT_TYPE "
+                         "INDEX_TYPE NAME' with known types: '" +
+                             line + "'");
+      if (list) {
         if (current == "face") face_bytes += bytes(count_type) + 3 * bytes(index_type);
       } else if (current == "vertex") {
         vertex_bytes += bytes(type);
@@ -186,7 +234,9 @@ void check_stl_size(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const bool text = std::all_of(bytes.begin(), bytes.end(), [](unsigned char c) {
-    return c == '\t' || c == '\n' || c == '\r' || c == '\f' || (c >= 32 && c < 127);
+    // Not a form feed: VTK reads a file with one as binary (found by fuzz_body_mesh_stl: a
+    // text file announcing 168 million facets in bytes 80 to 83, 6 GB allocated).
+    return c == '\t' || c == '\n' || c == '\r' || (c >= 32 && c < 127);
   });
   if (text) {
     // An ASCII facet takes at least about 100 bytes ("facet normal", a loop of 3 vertices).
@@ -224,7 +274,7 @@ PolygonMesh read_polygon_mesh(const std::string& path) {
   const std::string ext = lower_extension(path);
   auto reader = reader_for(path, ext);
   if (ext == "obj") check_obj_size(path);
-  if (ext == "obj") check_obj_vertex_lines(path);
+  if (ext == "obj") check_obj_lines(path);
   if (ext == "ply") check_ply_complete(path);
   if (ext == "stl") check_stl_size(path);
   // The reader's own reports say what is wrong; the pipeline's only that the reader failed.

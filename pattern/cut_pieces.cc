@@ -34,7 +34,10 @@ PanelOutline unfolded(const PanelOutline& piece) {
     throw PatternError("panel '" + piece.name + "': a piece cut on the fold needs three edges");
   const Vec2 a = piece.edges[f].segments.front().start;
   const Vec2 b = piece.edges[f].segments.back().end;
-  const auto [A, shift] = reflection_across(a, b - a);
+  // Named references, not a structured binding: C++17 lambdas cannot capture those.
+  const auto reflection = reflection_across(a, b - a);
+  const Mat2& A = reflection.first;
+  const Vec2& shift = reflection.second;
   // Walking from the fold's end B round to its start A: e_1 ... e_m; the mirror image walks
   // back from A to B. e_1 and e_m touch the fold and join their own mirror images.
   std::vector<const Edge*> chain;

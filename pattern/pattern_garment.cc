@@ -119,12 +119,17 @@ std::vector<PolygonMesh> conforming_meshes(EdgeDivision& division,
                                            const PatternMeshOptions& options) {
   const int n_panels = static_cast<int>(grids.size());
   std::vector<PolygonMesh> meshes(n_panels);
+  // Each panel's budget from its outline before any round added points to it: a spike
+  // narrower than the edge length makes every round add a few hundred more.
+  std::vector<double> budget(n_panels);
+  for (int p = 0; p < n_panels; ++p)
+    budget[p] = mesh_vertex_budget(division.outline_points(p), options.edge_length_m);
   for (int round = 0; round < 16; ++round) {
     for (int p = 0; p < n_panels; ++p) {
       if (grids[p]) continue;
       try {
-        meshes[p] =
-            mesh_polygon(division.outline_points(p), options.edge_length_m, options.min_angle_deg);
+        meshes[p] = mesh_polygon(division.outline_points(p), options.edge_length_m,
+                                 options.min_angle_deg, budget[p]);
       } catch (const std::invalid_argument& error) {
         throw PatternError("panel '" + division.pattern().panels[p].name + "': " + error.what());
       }

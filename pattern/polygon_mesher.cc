@@ -7,9 +7,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 namespace tightfit::pattern {
 
@@ -44,26 +46,79 @@ PolygonMesh::BoundaryPoint on_outline(const std::vector<Vec2>& outline, const Ve
   return best;
 }
 
+// An outline that runs back along itself (a turn of 180 degrees between consecutive chords)
+// has a sliver of no area there: CGAL's constrained triangulation then dereferences a null face
+// while inserting the overlapping constraints (found by fuzz_pattern_dxf), so it is refused
+// before.
+void require_no_reversal(const std::vector<Vec2>& outline_m) {
+  const std::size_t n = outline_m.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2& x = outline_m[k];
+    const Vec2 in = x - outline_m[(k + n - 1) % n], out = outline_m[(k + 1) % n] - x;
+    const double cross = in.x() * out.y() - in.y() * out.x();
+    if (in.dot(out) < 0 && std::abs(cross) <= 1e-12 * in.norm() * out.norm()) {
+      char where[96];
+      std::snprintf(where, sizeof where, "(%.6g, %.6g) m", x.x(), x.y());
+      throw std::invalid_argument(std::string("the outline turns back on itself at ") + where);
+    }
+  }
+}
+
 }  // namespace
 
+// 1000 more: a strip narrower than h (a waistband 1 m by 5 mm at h = 5 cm takes 322
+// vertices: the angle bound makes its triangles as small as its width).
+double mesh_vertex_budget(const std::vector<Vec2>& outline_m, double h) {
+  double twice_area = 0.0, perimeter = 0.0;
+  for (std::size_t i = 0; i < outline_m.size(); ++i) {
+    const Vec2& a = outline_m[i];
+    const Vec2& b = outline_m[(i + 1) % outline_m.size()];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+    perimeter += (b - a).norm();
+  }
+  return 10 * (std::abs(twice_area) / (std::sqrt(3.0) * h * h) + perimeter / h +
+               static_cast<double>(outline_m.size())) +
+         1000;
+}
+
 PolygonMesh mesh_polygon(const std::vector<Vec2>& outline_m, double edge_length_m,
-                         double min_angle_deg) {
+                         double min_angle_deg, double max_vertices) {
   if (outline_m.size() < 3) throw std::invalid_argument("an outline needs three points");
   if (!(edge_length_m > 0)) throw std::invalid_argument("the mesh edge length must be positive");
   if (!(min_angle_deg > 0) || min_angle_deg > 33)
     throw std::invalid_argument("the minimum angle must be in (0, 33] degrees");
+  require_no_reversal(outline_m);
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> outline_vertex;
   for (const Vec2& x : outline_m) outline_vertex.push_back(cdt.insert(Point(x.x(), x.y())));
   const std::size_t n = outline_m.size();
-  for (std::size_t k = 0; k < n; ++k)
-    cdt.insert_constraint(outline_vertex[k], outline_vertex[(k + 1) % n]);
+  // Before any constraint: a constraint from a vertex to itself (a segment of no length) makes
+  // CGAL dereference a null face (found by fuzz_pattern_dxf).
   if (cdt.number_of_vertices() != n)
     throw std::invalid_argument("the outline passes twice through one point");
+  try {
+    for (std::size_t k = 0; k < n; ++k)
+      cdt.insert_constraint(outline_vertex[k], outline_vertex[(k + 1) % n]);
+  } catch (const Cdt::Intersection_of_constraints_exception&) {
+    throw std::invalid_argument("the outline crosses itself");
+  }
 
   // CGAL's shape bound is sin^2 of the smallest angle; its size bound the longest edge.
   const double sine = std::sin(min_angle_deg * M_PI / 180.0);
-  CGAL::refine_Delaunay_mesh_2(cdt, Criteria(sine * sine, edge_length_m));
+  CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt, Criteria(sine * sine, edge_length_m));
+  mesher.init();
+  const double most_vertices =
+      max_vertices > 0 ? max_vertices : mesh_vertex_budget(outline_m, edge_length_m);
+  while (!mesher.is_refinement_done()) {
+    mesher.step_by_step_refine_mesh();
+    if (cdt.number_of_vertices() > most_vertices)
+      throw std::invalid_argument(
+          "meshing at edge length " + std::to_string(edge_length_m) + " m took more than " +
+          std::to_string(static_cast<long>(most_vertices)) +
+          " vertices, ten times what the outline's area and perimeter call for and 1000 "
+          "more: the outline has a corner or a neck far narrower than the edge length (a "
+          "spike, or two parts almost touching)");
+  }
 
   PolygonMesh mesh;
   mesh.points_m = outline_m;

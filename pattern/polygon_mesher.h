@@ -21,12 +21,20 @@ struct PolygonMesh {
   std::vector<BoundaryPoint> added_on_outline;
 };
 
+// The most vertices a mesh of outline `outline_m` at edge length `edge_length_m` may take:
+// ten times the estimate for equilateral triangles of that side, 2 A / (sqrt(3) h^2) inside
+// plus L / h on the outline (and every outline point), and 1000 more. A spike or a neck far
+// narrower than the edge length would make the angle bound refine towards it without end.
+double mesh_vertex_budget(const std::vector<Vec2>& outline_m, double edge_length_m);
+
 // `outline_m`: a simple polygon, counter-clockwise, its last point not repeating the first.
 // Triangles are refined until every edge is at most `edge_length_m` and every angle at least
 // `min_angle_deg` (CGAL guarantees termination up to about 20.7 degrees and usually reaches
-// 30). Throws std::invalid_argument for a bad polygon or bound.
+// 30). Throws std::invalid_argument for a bad polygon or bound: an outline that crosses itself
+// or turns back along itself, or a mesh of more than `max_vertices` (0: mesh_vertex_budget of
+// this outline).
 PolygonMesh mesh_polygon(const std::vector<Vec2>& outline_m, double edge_length_m,
-                         double min_angle_deg);
+                         double min_angle_deg, double max_vertices = 0);
 
 // Element quality of a triangle mesh: the smallest angle and the spread of edge lengths.
 struct MeshQuality {

@@ -11,7 +11,8 @@ seconds=${1:-600}
 shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] ||
-  targets=(fuzz_case_file fuzz_set_assignments fuzz_body_mesh_obj fuzz_body_mesh_stl fuzz_body_mesh_ply)
+  targets=(fuzz_case_file fuzz_set_assignments fuzz_body_mesh_obj fuzz_body_mesh_stl fuzz_body_mesh_ply
+    fuzz_pattern_svg fuzz_pattern_json fuzz_pattern_dxf)
 bash scripts/install-dependencies.sh --fuzz
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

@@ -56,8 +56,14 @@ TEST(BodyMeshInput, WrongNumbersInObj) {
   expect_refused(path, {"line 2", "'x1' is not a number"});
   write_text(path, "v 1 1 1\nv 1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
   expect_refused(path, {"line 2", "three coordinates"});
+  // Face indices are checked against the file's lines before VTK reads it (VTK follows a
+  // texture index past the "vt" lines into a null pointer).
   write_text(path, tetrahedron_vertices + "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 9\n");
-  expect_refused(path, {"face 3", "vertex 8"});
+  expect_refused(path, {"line 8", "face corner '9'", "not one of the 4 'v' lines"});
+  write_text(path, tetrahedron_vertices + "f 1 2 3\nf 1 4 2\nf 1/1 3 4\nf 2 4 3\n");
+  expect_refused(path, {"line 7", "face corner '1/1'", "not one of the 0 'vt' lines"});
+  write_text(path, tetrahedron_vertices + "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 -1\n");
+  expect_refused(path, {"line 8", "relative ones are not read"});
 }
 
 TEST(BodyMeshInput, TruncatedStlAndPly) {

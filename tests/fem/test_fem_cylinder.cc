@@ -449,10 +449,27 @@ TEST(CylinderRefinement, QuadraticElementsConvergeAtFourthOrder) {
 
 // The six closed forms with quadratic triangles on a coarse tube (24 triangles round the hoop,
 // where linear ones err by about 1%), swept over alpha as a run does: held ends hold the end
-// rows' midpoints too, and every law must land within 1e-3 with a spread under 0.5%.
+// rows' midpoints too. The bounds are 1.5 times the largest error measured over alpha 1.2,
+// 1.5, 1.8 and both end conditions (the printout below; Release build): the mean pressure
+// and the force over the area read high for linear Biot (5.6e-6 and 1.06e-5) and St
+// Venant-Kirchhoff (6.25e-5, 7.26e-5) and low for neo-Hookean (-2.93e-5, -2.51e-5) at every
+// alpha and end condition, so each check is one-sided with that sign; the spread is at most
+// 3.73e-5.
+struct QuadraticTubeBound {
+  const char* law;
+  double sign;                     // of the measured error
+  double mean_error, force_error;  // 1.5 x the largest measured |relative error|
+};
+constexpr QuadraticTubeBound quadratic_tube_bounds[] = {
+    {"linear biot", +1.0, 1.5 * 5.63e-6, 1.5 * 1.061e-5},
+    {"st venant kirchhoff", +1.0, 1.5 * 6.25e-5, 1.5 * 7.257e-5},
+    {"neo hookean", -1.0, 1.5 * 2.927e-5, 1.5 * 2.51e-5}};
+constexpr double quadratic_tube_spread = 1.5 * 3.73e-5;
+
 TEST(CylinderQuadratic, SixClosedFormsOnACoarseTube) {
-  for (const char* law : {"linear biot", "st venant kirchhoff", "neo hookean"})
+  for (const QuadraticTubeBound& bound : quadratic_tube_bounds)
     for (const EndCondition ends : {EndCondition::free_ends, EndCondition::held_ends}) {
+      const char* law = bound.law;
       TubeCase tube(law, ends, MeshSpacing{0.1878 / 12, 0.06});
       FemParameters parameters;
       parameters.element_degree = 2;
@@ -466,16 +483,19 @@ TEST(CylinderQuadratic, SixClosedFormsOnACoarseTube) {
         const PressureSummary p = tube.pressure(state);
         const double theory =
             closed_form_pressure_Pa(law, ends, tube.fabric, tube.rest_radius_m, alpha);
+        const double mean_error = p.mean_Pa / theory - 1;
+        const double force_error = force_over_area_Pa(tube, state) / theory - 1;
         std::printf(
             "degree 2, %s, %s ends, alpha %.1f: rel %+.3e, F/A rel %+.3e, spread %.2e, "
             "%.3f s, %d Newton\n",
-            law, ends == EndCondition::free_ends ? "free" : "held", alpha, p.mean_Pa / theory - 1,
-            force_over_area_Pa(tube, state) / theory - 1, p.std_Pa / p.mean_Pa, report.wall_seconds,
-            report.iterations);
+            law, ends == EndCondition::free_ends ? "free" : "held", alpha, mean_error, force_error,
+            p.std_Pa / p.mean_Pa, report.wall_seconds, report.iterations);
         EXPECT_EQ(p.contact_fraction, 1.0);
-        EXPECT_NEAR(p.mean_Pa / theory, 1.0, 1e-3) << law << " alpha " << alpha;
-        EXPECT_NEAR(force_over_area_Pa(tube, state) / theory, 1.0, 1e-3);
-        EXPECT_LE(p.std_Pa / p.mean_Pa, 0.005);
+        EXPECT_GE(bound.sign * mean_error, 0.0) << law << " alpha " << alpha;
+        EXPECT_LE(bound.sign * mean_error, bound.mean_error) << law << " alpha " << alpha;
+        EXPECT_GE(bound.sign * force_error, 0.0) << law << " alpha " << alpha;
+        EXPECT_LE(bound.sign * force_error, bound.force_error) << law << " alpha " << alpha;
+        EXPECT_LE(p.std_Pa / p.mean_Pa, quadratic_tube_spread);
         EXPECT_LE(backend.max_penetration_m(), 1e-9);
       }
     }
