@@ -56,4 +56,25 @@ inline BodyCaseRun run_body_case(const std::vector<std::string>& settings,
   return result;
 }
 
+// A case file already read (with its overrides) run on one backend, writing nothing; the
+// scenario is kept for checks that need its mesh or parameters.
+struct CaseFileRun {
+  std::unique_ptr<Scenario> scenario;
+  RunResult run;
+  std::string log;
+};
+
+inline CaseFileRun run_case_file(const CaseFile& file, const std::string& backend) {
+  CaseParameters parameters = file.parameters();
+  parameters.output.write_files = false;
+  CaseFileRun result;
+  result.scenario = make_scenario(parameters);
+  std::ostringstream log;
+  result.run = run_scenario(
+      *result.scenario,
+      [&](const Problem& problem) { return file.create_backend(backend, problem); }, "", log);
+  result.log = log.str();
+  return result;
+}
+
 }  // namespace tightfit::testing

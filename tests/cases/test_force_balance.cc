@@ -21,6 +21,7 @@
 //   sheet, worst vertex   3.1e-3        8.3e-12     (its traction against rho_A g)
 // The mass-spring sheet stops settling while its residual, 1e-4 of the tension scale, is still
 // of the order of its weight per vertex.
+#include "body_case.h"
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
@@ -99,16 +100,11 @@ TEST_P(ForceBalance, TubeOnHorizontalCylinderCarriesItsWeightAndNothingElse) {
 TEST_P(ForceBalance, SheetOnPlaneCarriesItsWeightAtEveryVertex) {
   CaseFile file;
   file.read(std::string(TIGHTFIT_CASES_DIR) + "/sheet_on_plane.prm", {"Output/Write VTU=false"});
-  CaseParameters parameters = file.parameters();
-  parameters.output.write_files = false;
-  std::unique_ptr<Scenario> scenario = make_scenario(parameters);
-  std::ostringstream log;
-  const RunResult run = run_scenario(
-      *scenario, [&](const Problem& problem) { return file.create_backend(GetParam(), problem); },
-      "", log);
-  ASSERT_TRUE(run.completed) << run.failure << "\n" << log.str();
+  const testing::CaseFileRun r = testing::run_case_file(file, GetParam());
+  const RunResult& run = r.run;
+  ASSERT_TRUE(run.completed) << run.failure << "\n" << r.log;
   const StepMeasurement& m = run.steps.back();
-  const Balance b = balance(*scenario, m, true);
+  const Balance b = balance(*r.scenario, m, true);
   const double miss_N = (b.contact_N + b.weight_N).norm();
   double worst = 0.0;
   for (double p : m.field.pressure_Pa) worst = std::max(worst, std::abs(p / m.p_theory_Pa - 1));

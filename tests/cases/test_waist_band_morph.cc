@@ -24,14 +24,9 @@ TEST(WaistBandMorph, NoVertexDeeperThanTheToleranceAndForcesBalance) {
              "Body/Morph/Target mesh=" + bodies + "/makehuman_default_male_body_m.obj",
              "Protocol/Alpha increment=0.5", "Garment/Edge length weft=0.02",
              "Garment/Edge length warp=0.025"});
-  CaseParameters parameters = file.parameters();
-  parameters.output.write_files = false;
-  std::unique_ptr<Scenario> scenario = make_scenario(parameters);
-  std::ostringstream log;
-  const RunResult run = run_scenario(
-      *scenario, [&](const Problem& problem) { return file.create_backend("massspring", problem); },
-      "", log);
-  ASSERT_TRUE(run.completed) << run.failure << "\n" << log.str();
+  const testing::CaseFileRun r = testing::run_case_file(file, "massspring");
+  const RunResult& run = r.run;
+  ASSERT_TRUE(run.completed) << run.failure << "\n" << r.log;
   ASSERT_EQ(run.steps.size(), 3u);
   double previous_p = 0.0;
   for (const StepMeasurement& m : run.steps) {
