@@ -120,6 +120,9 @@ TEST(PlyFileCheck, AsciiLineShortOfValuesIsRefused) {
   expect_refusal_names(path, {"line 17", "face 3", "fewer values"});
   write_text(path, ascii_tetrahedron("1 1 1\n1 -1 one\n-1 1 -1\n-1 -1 1\n", ascii_faces));
   expect_refusal_names(path, {"line 11", "vertex 1"});
+  // Three values for a stream, two words for VTK, which splits at spaces and tabs only.
+  write_text(path, ascii_tetrahedron("1 1 1\n1 -1\v-1\n-1 1 -1\n-1 -1 1\n", ascii_faces));
+  expect_refusal_names(path, {"line 11", "vertex 1"});
 }
 
 TEST(PlyFileCheck, CoordinateThatIsNotFiniteIsRefusedNamingTheVertex) {
@@ -162,6 +165,9 @@ TEST(PlyFileCheck, HeadersVtkWouldMisreadAreRefused) {
        {"'edge' comes before"}},
       {"element vertex 3\n" + xyz + "element face 1\nproperty list float int vertex_indices\n",
        {"line 8", "an integer count"}},
+      // A vertical tab VTK keeps in the name "z" (found by fuzz_body_mesh_ply).
+      {"element vertex 3\nproperty float x\nproperty float y\nproperty float z\v\n" + faces,
+       {"line 6", "control character"}},
   };
   const std::string path = temporary_path("bad_header.ply");
   for (const Case& c : cases) {
