@@ -96,8 +96,13 @@ PlyHeader read_header(std::istream& in, const std::string& path) {
         !keyword.empty())
       throw body_mesh_line_error(path, number,
                                  "'" + keyword + "' is not a PLY header keyword: '" + line + "'");
+    if ((keyword == "ply" && number > 1) || (keyword == "format" && !header.format.empty()))
+      throw body_mesh_line_error(path, number, "a second '" + keyword + "' line: '" + line + "'");
     if (keyword == "format") {
-      words >> header.format;
+      std::string version;
+      words >> header.format >> version;
+      if (version != "1.0")
+        throw body_mesh_line_error(path, number, "the format's version is 1.0: '" + line + "'");
       if (header.format != "ascii" && header.format != "binary_little_endian" &&
           header.format != "binary_big_endian")
         throw body_mesh_line_error(path, number,
@@ -162,6 +167,11 @@ void check_elements(const PlyHeader& header, const std::string& path) {
   std::size_t last_read = 0;
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const PlyElement& element = header.elements[e];
+    // VTK allocates an element's property list with its first property and frees it when it
+    // closes the file: with none it frees an address it never set (found by
+    // fuzz_body_mesh_ply).
+    if (element.properties.empty())
+      throw refuse("the element '" + element.name + "' has no properties");
     if (element.name != "vertex" && element.name != "face") continue;
     last_read = e;
     for (const std::string coordinate : {"x", "y", "z"}) {

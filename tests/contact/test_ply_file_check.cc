@@ -165,6 +165,14 @@ TEST(PlyFileCheck, HeadersVtkWouldMisreadAreRefused) {
        {"'edge' comes before"}},
       {"element vertex 3\n" + xyz + "element face 1\nproperty list float int vertex_indices\n",
        {"line 8", "an integer count"}},
+      // An element with no properties, whose unset property list VTK frees (found by
+      // fuzz_body_mesh_ply), and a second "ply" and "format" line.
+      {"element vertex 3\n" + xyz + "element empty 2\n" + faces,
+       {"the element 'empty' has no properties"}},
+      {"element vertex 3\n" + xyz + "ply\nformat ascii 1.0\n" + faces,
+       {"line 7", "a second 'ply' line"}},
+      {"element vertex 3\n" + xyz + "format ascii 1.0\n" + faces,
+       {"line 7", "a second 'format' line"}},
       // A vertical tab VTK keeps in the name "z" (found by fuzz_body_mesh_ply).
       {"element vertex 3\nproperty float x\nproperty float y\nproperty float z\v\n" + faces,
        {"line 6", "control character"}},
