@@ -144,5 +144,24 @@ TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
   }
 }
 
+TEST(Dressing, PanelsPlacedInsideTheShrunkBodyAreRefusedNamingTheVertex) {
+  // The cylinder at alpha 1.2 (7.17 cm) shrunk to 0.9 (6.45 cm) and the panels on a 6 cm circle:
+  // every vertex starts 4.5 mm inside it.
+  CaseFile file;
+  dressing_case(file, 0.06, {"Placement/Dressing/Start scale=0.9"});
+  testing::start_cylinder_at(file, 1.2, rest_radius_45T_m);
+  CaseParameters parameters = file.parameters();
+  try {
+    make_scenario(parameters);
+    FAIL() << "a start inside the body was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("Placement/Dressing: dressing: panel 4 5T panel 1 vertex 0 starts"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("inside the body shrunk to 0.9"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace tightfit
