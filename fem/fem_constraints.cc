@@ -1,5 +1,6 @@
 #include "fem/fem_constraints.h"
 
+#include "fem/freed_memory.h"
 #include "fem/rigid_motion_pin.h"
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -61,12 +62,15 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
     constrain_directions(pattern.vertex_dofs[pattern.master[p.vertex]], p.directions, constraints);
   constraints.close();
 
-  // Every rank holds the whole (small) mesh: the pattern is built from all cells, each rank
-  // keeps its own rows.
-  dealii::DynamicSparsityPattern sparsity(pattern.dof_handler.n_dofs());
-  for (const std::vector<GlobalDof>& dofs : pattern.cell_dofs)
-    constraints.add_entries_local_to_global(dofs, sparsity, false);
-  system.tangent.reinit(pattern.owned_dofs, pattern.owned_dofs, sparsity, comm);
+  // Every rank holds the whole mesh: the pattern is built from all cells, and each rank
+  // stores only its own rows (entries in other rows are dropped as they are added).
+  {
+    dealii::DynamicSparsityPattern sparsity(pattern.n_dofs(), pattern.n_dofs(), pattern.owned_dofs);
+    for (const std::vector<GlobalDof>& dofs : pattern.cell_dofs)
+      constraints.add_entries_local_to_global(dofs, sparsity, false);
+    system.tangent.reinit(pattern.owned_dofs, pattern.owned_dofs, sparsity, comm);
+  }
+  release_freed_memory();
   system.rhs.reinit(pattern.owned_dofs, comm);
   system.increment.reinit(pattern.owned_dofs, comm);
 }

@@ -127,7 +127,7 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
 }
 
 std::vector<Vec3> MembraneAssembly::internal_force_N(const dealii::Vector<double>& x) const {
-  dealii::Vector<double> gradient_full(pattern_.dof_handler.n_dofs());
+  dealii::Vector<double> gradient_full(pattern_.n_dofs());
   Eigen::VectorXd gradient;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
     if (!pattern_.cell_owned[cell]) continue;
@@ -150,9 +150,9 @@ void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
   const int n = pattern_.n_nodes();
   if (static_cast<int>(node_positions_m.size()) != n)
     throw std::invalid_argument("fem backend: linearise() needs one position per node");
-  dealii::Vector<double> x(pattern_.dof_handler.n_dofs());
+  dealii::Vector<double> x(pattern_.n_dofs());
   // DoF -> row 3 node + c of the node it carries (every copy of a node shares its rows).
-  std::vector<int> dof_row(pattern_.dof_handler.n_dofs(), -1);
+  std::vector<int> dof_row(pattern_.n_dofs(), -1);
   for (int node = 0; node < n; ++node) {
     pattern_.set_node_position(x, node, node_positions_m[node]);
     for (const DofTriple& d : pattern_.node_copies[node])

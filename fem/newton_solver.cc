@@ -28,7 +28,7 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
                                                          parameters.max_linear_iterations, comm)) {
-  dof_weight_.assign(pattern.dof_handler.n_dofs(), 1.0);
+  dof_weight_.assign(pattern.n_dofs(), 1.0);
   for (int node = 0; node < pattern.n_nodes(); ++node)
     for (const DofTriple& copy : pattern.node_copies[node])
       for (const GlobalDof i : copy)
@@ -65,7 +65,7 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, NewtonSystem& system
 }
 
 dealii::Vector<double> NewtonSolver::gather_increment(NewtonSystem& system) const {
-  dealii::Vector<double> full(pattern_.dof_handler.n_dofs());
+  dealii::Vector<double> full(pattern_.n_dofs());
   for (const auto i : pattern_.owned_dofs) full[i] = system.increment(i);
   MPI_Allreduce(MPI_IN_PLACE, full.begin(), static_cast<int>(full.size()), MPI_DOUBLE, MPI_SUM,
                 comm_);

@@ -1,6 +1,7 @@
 #include "fem/pattern_mesh.h"
 
 #include "fem/contact_nodes.h"
+#include "fem/freed_memory.h"
 #include "fem/panel_triangles.h"
 
 #include <deal.II/fe/fe_simplex_p.h>
@@ -33,31 +34,35 @@ unsigned int gauss_points_1d(int element_degree) {
 PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm comm)
     : mesh(*problem.mesh),
       element_degree(degree),
-      triangulation(comm),
       fe(dealii::FE_SimplexP<2>(degree), 3),
       mapping(dealii::FE_SimplexP<2>(1)),
-      quadrature(gauss_points_1d(degree)),
-      dof_handler(triangulation) {
-  const std::vector<Mat2> to_grain_gradient = build_triangulation();
-  dof_handler.distribute_dofs(fe);
-  owned_dofs = dof_handler.locally_owned_dofs();
-  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
-    local_component.push_back(fe.system_to_component_index(i).first);
-    local_node.push_back(fe.system_to_component_index(i).second);
+      quadrature(gauss_points_1d(degree)) {
+  {
+    // The triangulation and DoF handler live only while the arrays are built.
+    Triangulation triangulation(comm);
+    const std::vector<Mat2> to_grain_gradient = build_triangulation(triangulation);
+    dealii::DoFHandler<2> dof_handler(triangulation);
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
+      local_component.push_back(fe.system_to_component_index(i).first);
+      local_node.push_back(fe.system_to_component_index(i).second);
+    }
+    vertex_dofs.assign(mesh.n_unwelded_vertices(), DofTriple{});
+    for (const auto& cell : dof_handler.active_cell_iterators())
+      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+        for (unsigned int c = 0; c < 3; ++c)
+          vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
+    master.assign(mesh.n_vertices, -1);
+    for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
+      if (master[mesh.welded_index[u]] < 0) master[mesh.welded_index[u]] = u;
+    build_nodes(dof_handler);
+    build_cell_quadrature(dof_handler, to_grain_gradient);
   }
-  vertex_dofs.assign(mesh.n_unwelded_vertices(), DofTriple{});
-  for (const auto& cell : dof_handler.active_cell_iterators())
-    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-      for (unsigned int c = 0; c < 3; ++c)
-        vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
-  master.assign(mesh.n_vertices, -1);
-  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-    if (master[mesh.welded_index[u]] < 0) master[mesh.welded_index[u]] = u;
-  build_nodes();
+  release_freed_memory();
   node_constrained = ConstrainedDirections(problem.constraints, mesh.n_vertices);
   // An edge midpoint is constrained along what both its ends are.
   for (const auto& ends : edge_ends) node_constrained.add_shared(ends[0], ends[1]);
-  build_cell_quadrature(to_grain_gradient);
 
   double edge_sum = 0.0;
   for (const auto& r : mesh.rest_triangles)
@@ -66,7 +71,7 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm comm)
   node_edge_m = node_edge_lengths_m(mesh, edge_ends, element_degree);
 }
 
-std::vector<Mat2> PatternMesh::build_triangulation() {
+std::vector<Mat2> PatternMesh::build_triangulation(Triangulation& triangulation) const {
   const std::vector<Triangle> panel_triangles = unwelded_triangles(mesh);
   std::vector<dealii::Point<2>> vertices;
   for (const Vec2& x : mesh.layout_positions_m) vertices.emplace_back(x.x(), x.y());
@@ -107,7 +112,7 @@ std::vector<Mat2> PatternMesh::build_triangulation() {
   return to_grain_gradient;
 }
 
-void PatternMesh::build_nodes() {
+void PatternMesh::build_nodes(const dealii::DoFHandler<2>& dof_handler) {
   node_copies.assign(mesh.n_vertices, {});
   for (int w = 0; w < mesh.n_vertices; ++w) node_copies[w].push_back(vertex_dofs[master[w]]);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
@@ -136,7 +141,7 @@ void PatternMesh::build_nodes() {
   std::vector<GlobalDof> dofs(n_local);
   std::vector<DofTriple> triples(n_element_nodes);
   std::vector<std::vector<DofTriple>> midpoint_copies;
-  cell_vertices.assign(triangulation.n_active_cells(), {});
+  cell_vertices.assign(dof_handler.get_triangulation().n_active_cells(), {});
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     cell->get_dof_indices(dofs);
     for (unsigned int i = 0; i < n_local; ++i) triples[local_node[i]][local_component[i]] = dofs[i];
@@ -161,10 +166,11 @@ void PatternMesh::build_nodes() {
   for (auto& copies : midpoint_copies) node_copies.push_back(std::move(copies));
 }
 
-void PatternMesh::build_cell_quadrature(const std::vector<Mat2>& to_grain_gradient) {
+void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
+                                        const std::vector<Mat2>& to_grain_gradient) {
   dealii::FEValues<2> fe_values(mapping, fe, quadrature,
                                 dealii::update_gradients | dealii::update_JxW_values);
-  const unsigned int n_cells = triangulation.n_active_cells();
+  const unsigned int n_cells = dof_handler.get_triangulation().n_active_cells();
   const unsigned int n_local = fe.n_dofs_per_cell();
   const unsigned int n_nodes_per_cell = n_local / 3;
   cell_dofs.assign(n_cells, std::vector<GlobalDof>(n_local));
@@ -209,7 +215,7 @@ void PatternMesh::build_cell_quadrature(const std::vector<Mat2>& to_grain_gradie
 
 std::vector<double> PatternMesh::node_rest_area_m2() const {
   // DoF -> the node it carries or follows.
-  std::vector<int> dof_node(dof_handler.n_dofs(), -1);
+  std::vector<int> dof_node(n_dofs(), -1);
   for (int node = 0; node < n_nodes(); ++node)
     for (const DofTriple& d : node_copies[node]) dof_node[d[0]] = node;
   std::vector<double> area(n_nodes(), 0.0);
@@ -236,7 +242,7 @@ void PatternMesh::set_node_position(dealii::Vector<double>& x, int node, const V
 }
 
 dealii::Vector<double> PatternMesh::dof_positions(const std::vector<Vec3>& positions_m) const {
-  dealii::Vector<double> x(dof_handler.n_dofs());
+  dealii::Vector<double> x(n_dofs());
   for (int w = 0; w < mesh.n_vertices; ++w) set_node_position(x, w, positions_m[w]);
   // Midpoints start on their chords; the contact predictor lifts those inside the body.
   for (std::size_t e = 0; e < edge_ends.size(); ++e)

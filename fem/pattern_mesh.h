@@ -4,6 +4,10 @@
 // reference configuration that assembly reads at every Newton iteration (per cell: DoFs,
 // quadrature weights, shape gradients in grain axes). Built once; read-only afterwards.
 //
+// The deal.II triangulation and DoF handler only build these arrays: they are dropped once
+// the arrays are filled (on the 96600-vertex tube they held about 150 MB on every rank, since
+// the shared triangulation keeps every cell everywhere; docs/performance.md, MPI).
+//
 // Nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
 // n_vertices + e. A node has one DoF triple per panel it lies in: the first carries it, the
 // others follow it (seam constraints, fem_constraints.h).
@@ -35,6 +39,7 @@ class PatternMesh {
   // 1 or 2.
   PatternMesh(const Problem& problem, int element_degree, MPI_Comm comm);
 
+  GlobalDof n_dofs() const { return owned_dofs.size(); }
   int n_nodes() const { return static_cast<int>(node_copies.size()); }
   int n_vertices() const { return mesh.n_vertices; }
   int n_cells() const { return static_cast<int>(cell_dofs.size()); }
@@ -54,11 +59,11 @@ class PatternMesh {
 
   const SimulationMesh& mesh;
   int element_degree;
-  dealii::parallel::shared::Triangulation<2> triangulation;
   dealii::FESystem<2> fe;
   dealii::MappingFE<2> mapping;
   dealii::QGaussSimplex<2> quadrature;
-  dealii::DoFHandler<2> dof_handler;
+  // This rank's DoFs (deal.II's partition of the cells over the ranks); its size() is the
+  // number of DoFs of all ranks.
   dealii::IndexSet owned_dofs;
   // Local DoF i of a cell is component local_component[i] of element node local_node[i].
   std::vector<int> local_component, local_node;
@@ -102,10 +107,12 @@ class PatternMesh {
   std::vector<double> node_edge_m;
 
  private:
+  using Triangulation = dealii::parallel::shared::Triangulation<2>;
   // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.
-  std::vector<Mat2> build_triangulation();
-  void build_nodes();
-  void build_cell_quadrature(const std::vector<Mat2>& to_grain_gradient);
+  std::vector<Mat2> build_triangulation(Triangulation& triangulation) const;
+  void build_nodes(const dealii::DoFHandler<2>& dof_handler);
+  void build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
+                             const std::vector<Mat2>& to_grain_gradient);
 };
 
 }  // namespace tightfit
