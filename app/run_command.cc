@@ -6,6 +6,7 @@
 #include "cases/scenario_run.h"
 
 #include <filesystem>
+#include <iostream>
 #include <ostream>
 
 namespace tightfit {
@@ -33,7 +34,13 @@ int run_command(const CommandLine& cl, std::ostream& out) {
     files.back()->read(path, cl.overrides);
     CaseParameters parameters = files.back()->parameters();
     share_output_by_rank(cl, parameters.output);
-    setups.push_back(make_scenario(parameters));
+    try {
+      setups.push_back(make_scenario(parameters));
+    } catch (const SolverError& e) {
+      // A start that must be solved for (Placement/Kind = dressing) and failed: a failed solve.
+      std::cerr << "tightfit: error: " << path << ": " << e.what() << "\n";
+      return 1;
+    }
   }
 
   int status = 0;

@@ -110,12 +110,9 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
       parameters.tangential_penalty_ratio * p.contact_stiffness_Pa_per_m;
   p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body);
   p.gravity_m_per_s2 = -parameters.protocol.gravity_m_per_s2 * parameters.protocol.up.normalized();
-  check_start(s, s.initial_positions());
+  s.start_positions_m = parameters.placement.place(s);
+  check_start(s, s.start_positions_m);
   return scenario;
-}
-
-std::vector<Vec3> Scenario::initial_positions() const {
-  return parameters.placement.place(*this);
 }
 
 LoadStep Scenario::prepare_step(int step) {

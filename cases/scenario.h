@@ -24,8 +24,10 @@ struct Scenario {
   // Every load step's body morph parameter, the first the settling one.
   std::vector<double> alphas;
 
-  // The placement's start positions of the garment, m.
-  std::vector<Vec3> initial_positions() const;
+  // The placement's start positions of the garment, m, found once when the scenario is made
+  // (a dressing solves for them).
+  std::vector<Vec3> start_positions_m;
+  const std::vector<Vec3>& initial_positions() const { return start_positions_m; }
   // Shapes the body for load step `step` and returns that step's description.
   LoadStep prepare_step(int step);
 };

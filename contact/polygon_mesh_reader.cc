@@ -1,7 +1,7 @@
 // VTK's readers for OBJ, STL and PLY; VTK stays inside this file.
 #include "contact/body_mesh_error.h"
+#include "contact/ply_file_check.h"
 #include "contact/polygon_mesh.h"
-#include "core/memory_budget.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -79,19 +79,6 @@ vtkSmartPointer<vtkPolyDataAlgorithm> reader_for(const std::string& path, const 
                       "' (expected .obj, .stl or .ply)");
 }
 
-// require_memory's refusal as the readers' own error type.
-void require_body_memory(const std::string& path, double faces, const std::string& items) {
-  try {
-    require_memory("body mesh '" + path + "'", faces, items, bytes_per_body_face);
-  } catch (const std::invalid_argument& e) {
-    throw BodyMeshError(e.what());
-  }
-}
-
-BodyMeshError file_error(const std::string& path, int line, const std::string& message) {
-  return BodyMeshError("body mesh '" + path + "', line " + std::to_string(line) + ": " + message);
-}
-
 // VTK's OBJ reader takes "v 1 x 0" or "v 0 0" without a word (it reads what it can): every
 // vertex line must hold three numbers. It also follows a face's texture and normal indices
 // ("f 1/2/3 ...") without checking them: one past the file's "vt" lines is a null pointer
@@ -111,11 +98,14 @@ void check_obj_lines(const std::string& path) {
     std::string word;
     for (int k = 0; k < 3; ++k) {
       if (!(words >> word))
-        throw file_error(path, number, "a vertex needs three coordinates: '" + line + "'");
+        throw body_mesh_line_error(path, number,
+                                   "a vertex needs three coordinates: '" + line + "'");
+      // VTK's OBJ reader takes "nan" and "inf" for 0 (a silent wrong vertex): refused here.
       char* end = nullptr;
-      std::strtod(word.c_str(), &end);
-      if (end == word.c_str() || *end != '\0')
-        throw file_error(path, number, "'" + word + "' is not a number: '" + line + "'");
+      const double value = std::strtod(word.c_str(), &end);
+      if (end == word.c_str() || *end != '\0' || !std::isfinite(value))
+        throw body_mesh_line_error(path, number,
+                                   "'" + word + "' is not a finite number: '" + line + "'");
     }
   }
   const char* kinds[3] = {"v", "vt", "vn"};
@@ -124,7 +114,7 @@ void check_obj_lines(const std::string& path) {
     for (std::string corner; words >> corner;) {
       // "26/": VTK takes the missing index after the slash for one (a null read).
       if (corner.back() == '/')
-        throw file_error(path, number, "face corner '" + corner + "' ends with '/'");
+        throw body_mesh_line_error(path, number, "face corner '" + corner + "' ends with '/'");
       std::istringstream parts(corner);
       std::string part;
       for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
@@ -132,96 +122,14 @@ void check_obj_lines(const std::string& path) {
         char* end = nullptr;
         const long index = std::strtol(part.c_str(), &end, 10);
         if (end == part.c_str() || *end != '\0' || index < 1 || index > count[kinds[k]])
-          throw file_error(path, number,
-                           "face corner '" + corner + "': '" + part + "' is not one of the " +
-                               std::to_string(count[kinds[k]]) + " '" + kinds[k] +
-                               "' lines (indices count from 1; relative ones are not read)");
+          throw body_mesh_line_error(
+              path, number,
+              "face corner '" + corner + "': '" + part + "' is not one of the " +
+                  std::to_string(count[kinds[k]]) + " '" + kinds[k] +
+                  "' lines (indices count from 1; relative ones are not read)");
       }
     }
   }
-}
-
-// VTK's PLY reader crashes (a double free) on a file that ends before the elements its header
-// announces: make sure the data is all there first. ASCII: one line per vertex and per face;
-// binary: at least the bytes of the vertices and of as many triangles.
-void check_ply_complete(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line, format, current;
-  long n_vertices = 0, n_faces = 0, vertex_bytes = 0, face_bytes = 0;
-  const std::map<std::string, int> size_of = {
-      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
-      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
-      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-  auto bytes = [&](const std::string& type) {
-    const auto it = size_of.find(type);
-    return it == size_of.end() ? 0 : it->second;
-  };
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "end_header") break;
-    // VTK's reader dereferences a null element on a header line it does not know (found by
-    // fuzz_body_mesh_ply: "pr`perty float y").
-    if (keyword != "ply" && keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
-        keyword != "element" && keyword != "property" && !keyword.empty())
-      throw file_error(path, number,
-                       "'" + keyword + "' is not a PLY header keyword: '" + line + "'");
-    if (keyword == "format") words >> format;
-    if (keyword == "element") {
-      long count = 0;
-      std::string more;
-      if (!(words >> current >> count) || (words >> more))
-        throw file_error(path, number, "an element is 'element NAME COUNT': '" + line + "'");
-      if (count < 0) throw file_error(path, number, "a negative element count: '" + line + "'");
-      if (current == "vertex") n_vertices = count;
-      if (current == "face") n_faces = count;
-    }
-    if (keyword == "property") {
-      // VTK's reader takes the words it expects without counting them (found by
-      // fuzz_body_mesh_ply: "property list uchar vertex_indices" read past the line).
-      std::string type, count_type, index_type, name, more;
-      words >> type;
-      const bool list = type == "list";
-      if (list) words >> count_type >> index_type;
-      if (!(words >> name) || (words >> more) || bytes(list ? index_type : type) == 0 ||
-          (list && bytes(count_type) == 0))
-        throw file_error(path, number,
-                         "a property is 'property TYPE NAME' or 'property list COUNT_TYPE "
-                         "INDEX_TYPE NAME' with known types: '" +
-                             line + "'");
-      if (list) {
-        if (current == "face") face_bytes += bytes(count_type) + 3 * bytes(index_type);
-      } else if (current == "vertex") {
-        vertex_bytes += bytes(type);
-      }
-    }
-  }
-  if (!in) throw file_error(path, number, "the header has no end_header");
-  require_body_memory(path, static_cast<double>(n_faces), "faces announced");
-  if (format == "ascii") {
-    long data_lines = 0;
-    while (std::getline(in, line))
-      if (line.find_first_not_of(" \t\r") != std::string::npos) ++data_lines;
-    if (data_lines < n_vertices + n_faces)
-      throw BodyMeshError("body mesh '" + path + "': truncated: the header announces " +
-                          std::to_string(n_vertices) + " vertices and " + std::to_string(n_faces) +
-                          " faces, the file holds " + std::to_string(data_lines) + " data lines");
-    return;
-  }
-  const auto data_start = in.tellg();
-  in.seekg(0, std::ios::end);
-  const long available = static_cast<long>(in.tellg() - data_start);
-  const double needed =
-      static_cast<double>(n_vertices) * vertex_bytes + static_cast<double>(n_faces) * face_bytes;
-  if (available < needed)
-    throw BodyMeshError("body mesh '" + path + "': truncated: " + std::to_string(available) +
-                        " bytes of data where the header's " + std::to_string(n_vertices) +
-                        " vertices and " + std::to_string(n_faces) + " faces need at least " +
-                        std::to_string(static_cast<long long>(needed)));
 }
 
 // A binary STL is an 80-byte header, a facet count n and 50 bytes per facet. VTK's reader
@@ -275,7 +183,7 @@ PolygonMesh read_polygon_mesh(const std::string& path) {
   auto reader = reader_for(path, ext);
   if (ext == "obj") check_obj_size(path);
   if (ext == "obj") check_obj_lines(path);
-  if (ext == "ply") check_ply_complete(path);
+  if (ext == "ply") check_ply_file(path);
   if (ext == "stl") check_stl_size(path);
   // The reader's own reports say what is wrong; the pipeline's only that the reader failed.
   std::string messages, pipeline_messages;

@@ -80,4 +80,13 @@ std::string material_law_descriptions();
 std::unique_ptr<MaterialLaw> make_material_law(const std::string& name,
                                                const FabricParameters& fabric);
 
+// The law `name` relaxed for slack (docs/model.md, "Slack: the tension field"): equal to it
+// wherever both principal stresses are tensile, zero stress across wrinkles and no energy where
+// the fabric is shortened every way, plus `compression_fraction` (0 to 1, dimensionless) of the
+// law's own energy difference there. Throws std::invalid_argument for laws it does not relax
+// (all but "linear biot") and a fraction outside [0, 1].
+std::unique_ptr<MaterialLaw> make_tension_field_law(const std::string& name,
+                                                    const FabricParameters& fabric,
+                                                    double compression_fraction);
+
 }  // namespace tightfit

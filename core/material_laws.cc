@@ -44,6 +44,12 @@ struct OrthotropicStiffness {
     return 0.5 * (d11 * e11 * e11 + 2.0 * d12 * e11 * e22 + d22 * e22 * e22) +
            2.0 * d33 * e12 * e12;
   }
+  // u : D : v for two strains in Voigt order (11, 22, 12) with engineering shear.
+  template <class S>
+  S product(const std::array<S, 3>& u, const std::array<S, 3>& v) const {
+    return d11 * u[0] * v[0] + d12 * (u[0] * v[1] + u[1] * v[0]) + d22 * u[1] * v[1] +
+           d33 * u[2] * v[2];
+  }
   double largest() const { return std::max(d11, d22); }
 };
 
@@ -71,6 +77,73 @@ class LinearBiot {
 
  private:
   OrthotropicStiffness stiffness_;
+};
+
+// Linear Biot relaxed for slack (docs/model.md, "Slack: the tension field"): a membrane takes
+// no compression, so the fabric's own strain e' may exceed the apparent strain e of the
+// mid-surface (the excess is taken up by wrinkles) and the energy is the least over it,
+//   W_rel(e) = min { 1/2 e' : D : e'  |  e' = Q diag(e1', e2') Q^T,  e1' >= e1, e2' >= e2 },
+// Q the principal directions of e (those of C) and e1 >= e2 its principal strains. On that
+// plane the energy is 1/2 [e1' e2'] A [e1' e2']^T, A_ij = (n_i n_i) : D : (n_j n_j), and the
+// box-constrained minimum has three cases:
+//   taut     (sigma_1, sigma_2 >= 0, sigma = A [e1 e2]^T): W_rel = W, the law unchanged;
+//   slack    (e1 <= 0, so both <= 0): e' = 0, W_rel = 0;
+//   wrinkled (tension along n_i, sigma_j < 0): e_j' = -A_ij e_i / A_jj, the free lateral
+//            contraction, W_rel = 1/2 (A_ii - A_ij^2 / A_jj) e_i^2.
+// It is C1 across the cases, and the normal stress across the wrinkles is zero. Holding the
+// principal frame's shear at zero is the approximation: exact when the wrinkles follow the
+// grain (or for an isotropic law), stiffer than the true relaxation otherwise.
+class TensionFieldLinearBiot {
+ public:
+  TensionFieldLinearBiot(const FabricParameters& f, double compression_fraction)
+      : stiffness_(f), compression_fraction_(compression_fraction) {}
+  static const char* name() { return "linear biot, tension field"; }
+  // W_eps = W_rel + eps (W - W_rel): the fraction eps of the law's own stiffness is kept
+  // where the fabric is wrinkled or slack, so that a state with no tension across (a tube with
+  // free ends) still has one equilibrium.
+  template <class S>
+  S energy(const S& c11, const S& c22, const S& c12) const {
+    const std::array<S, 3> e = biot_strain(c11, c22, c12);
+    const S w = full(e);
+    const S relaxed = relaxed_energy(e, w);
+    return compression_fraction_ == 0.0 ? relaxed : relaxed + compression_fraction_ * (w - relaxed);
+  }
+  double stiffness_scale() const { return stiffness_.largest(); }
+
+ private:
+  template <class S>
+  S full(const std::array<S, 3>& e) const {
+    return stiffness_.quadratic_energy(e[0], e[1], e[2]);
+  }
+  // W_rel of the Biot strain e, given the law's own energy w there.
+  template <class S>
+  S relaxed_energy(const std::array<S, 3>& e, const S& w) const {
+    using std::sqrt;
+    const S mean = 0.5 * (e[0] + e[1]);
+    const S half_difference = 0.5 * (e[0] - e[1]);
+    const double r2 = scalar_value(half_difference * half_difference + e[2] * e[2]);
+    // An isotropic strain has no principal frame: taut when stretched, slack when shortened.
+    if (r2 < 1e-24) return scalar_value(mean) > 0.0 ? w : S(0.0);
+    const S r = sqrt(half_difference * half_difference + e[2] * e[2]);
+    const S e1 = mean + r, e2 = mean - r;
+    if (scalar_value(e1) <= 0.0) return S(0.0);
+    // n1 at angle phi from the weft: cos 2 phi = (e11 - e22) / 2 r, sin 2 phi = e12 / r.
+    // In Voigt order (11, 22, 2*12): n1 n1 = ((1 + c)/2, (1 - c)/2, s), n2 n2 = ((1 - c)/2,
+    // (1 + c)/2, -s).
+    const S c = half_difference / r, s = e[2] / r;
+    const std::array<S, 3> v1 = {0.5 * (1.0 + c), 0.5 * (1.0 - c), s};
+    const std::array<S, 3> v2 = {0.5 * (1.0 - c), 0.5 * (1.0 + c), -s};
+    const S a11 = stiffness_.product(v1, v1), a12 = stiffness_.product(v1, v2),
+            a22 = stiffness_.product(v2, v2);
+    const double sigma1 = scalar_value(a11 * e1 + a12 * e2);
+    const double sigma2 = scalar_value(a12 * e1 + a22 * e2);
+    if (sigma1 >= 0.0 && sigma2 >= 0.0) return w;
+    if (sigma2 < 0.0) return 0.5 * (a11 - a12 * a12 / a22) * e1 * e1;  // tension along n1
+    // Tension along n2 with e1 > 0 > sigma1: only where A12 < 0 (a shear-stiff fabric).
+    return 0.5 * (a22 - a12 * a12 / a11) * e2 * e2;
+  }
+  OrthotropicStiffness stiffness_;
+  double compression_fraction_;
 };
 
 // St. Venant-Kirchhoff: second Piola-Kirchhoff stress linear in the Green strain (C - I)/2.
@@ -128,7 +201,8 @@ class TensileCurveLaw {
 template <class Law>
 class DifferentiatedLaw final : public MaterialLaw {
  public:
-  explicit DifferentiatedLaw(const FabricParameters& f) : law_(f) {}
+  template <class... Arguments>
+  explicit DifferentiatedLaw(const Arguments&... arguments) : law_(arguments...) {}
   std::string name() const override { return Law::name(); }
   double energy(const Mat2& C) const override { return law_.energy(C(0, 0), C(1, 1), C(0, 1)); }
   Mat2 stress(const Mat2& C) const override {
@@ -192,6 +266,22 @@ std::unique_ptr<MaterialLaw> make_material_law(const std::string& name,
   std::string known;
   for (const auto& n : material_law_names()) known += " '" + n + "'";
   throw std::invalid_argument("Material/Law: unknown law '" + name + "'; known:" + known);
+}
+
+std::unique_ptr<MaterialLaw> make_tension_field_law(const std::string& name,
+                                                    const FabricParameters& fabric,
+                                                    double compression_fraction) {
+  fabric.validate();
+  if (!(compression_fraction >= 0.0 && compression_fraction <= 1.0))
+    throw std::invalid_argument(
+        "the fraction of the stiffness kept in compression must be in "
+        "[0, 1], not " +
+        std::to_string(compression_fraction));
+  if (name == LinearBiot::name())
+    return std::make_unique<DifferentiatedLaw<TensionFieldLinearBiot>>(fabric,
+                                                                       compression_fraction);
+  throw std::invalid_argument("the tension field relaxes Material/Law = '" +
+                              std::string(LinearBiot::name()) + "' only, not '" + name + "'");
 }
 
 }  // namespace tightfit

@@ -59,12 +59,33 @@ const Problem& checked(const Problem& problem, const FemParameters& parameters) 
   return problem;
 }
 
+// The problem with its law relaxed as Finite elements/Slack treatment asks; `relaxed` keeps
+// the relaxed law alive.
+Problem with_slack_treatment(const Problem& problem, const FemParameters& parameters,
+                             std::unique_ptr<MaterialLaw>& relaxed) {
+  if (parameters.slack_treatment == SlackTreatment::none) return problem;
+  if (!problem.fabric)
+    throw std::invalid_argument(
+        "Finite elements/Slack treatment = " + std::string(to_string(parameters.slack_treatment)) +
+        ": the problem has no fabric to relax");
+  try {
+    relaxed = make_tension_field_law(problem.law->name(), *problem.fabric,
+                                     parameters.compression_stiffness_fraction);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("Finite elements/Slack treatment = tension field: " +
+                                std::string(e.what()));
+  }
+  Problem result = problem;
+  result.law = relaxed.get();
+  return result;
+}
+
 }  // namespace
 
 class FemBackend::Implementation {
  public:
   Implementation(const Problem& problem, const FemParameters& parameters)
-      : problem_(checked(problem, parameters)),
+      : problem_(with_slack_treatment(checked(problem, parameters), parameters, relaxed_law_)),
         parameters_(parameters),
         pattern_(problem_, parameters.element_degree, comm_),
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
@@ -93,6 +114,7 @@ class FemBackend::Implementation {
 
   StepReport solve(const LoadStep& step);
 
+  std::unique_ptr<MaterialLaw> relaxed_law_;  // the law of problem_ under a slack treatment
   Problem problem_;
   FemParameters parameters_;
   MPI_Comm comm_ = MPI_COMM_WORLD;

@@ -22,6 +22,16 @@ const char* to_string(LinearSolverKind kind) {
   return "unknown";
 }
 
+const char* to_string(SlackTreatment treatment) {
+  switch (treatment) {
+    case SlackTreatment::none:
+      return "none";
+    case SlackTreatment::tension_field:
+      return "tension field";
+  }
+  return "unknown";
+}
+
 void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
@@ -87,6 +97,22 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "theta, dimensionless. The shift vanishes with the residual (quadratic "
                     "convergence is kept) and lets Newton through states where the tangent is "
                     "singular, such as a tube touching the body at zero tension. 0 turns it off.");
+  prm.declare_entry("Slack treatment", to_string(d.slack_treatment),
+                    Selection("none|tension field"),
+                    "How the membrane treats compression. 'none': the law as given, as stiff in "
+                    "compression as in tension. 'tension field': the law relaxed "
+                    "(docs/model.md, 'Slack: the tension field'): where a principal stress "
+                    "would be compressive the fabric wrinkles and carries tension along the "
+                    "other principal direction only, with no stress across it; where both "
+                    "principal strains are shortenings it carries nothing. Unchanged wherever "
+                    "both principal stresses are tensile. Material/Law = linear biot only.");
+  prm.declare_entry("Compression stiffness fraction", "1e-2", Double(0, 1),
+                    "Under 'tension field': the fraction of the law's own stiffness kept where "
+                    "the fabric is wrinkled or slack, W = W_rel + eps (W_law - W_rel): this eps, "
+                    "dimensionless. Without it a state with no tension across (a tube with free "
+                    "ends, whose axial stress is zero) has a family of equilibria, any axial "
+                    "shortening costing nothing; with it the one of the law itself. The stress "
+                    "across wrinkles is eps times the law's compression.");
   prm.leave_subsection();
 }
 
@@ -113,6 +139,15 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   gap_tolerance_m = prm.get_double("Gap tolerance");
   tangent_shift_N_per_m = prm.get_double("Tangent shift");
   residual_shift_factor = prm.get_double("Residual shift factor");
+  compression_stiffness_fraction = prm.get_double("Compression stiffness fraction");
+  const std::string slack = prm.get("Slack treatment");
+  if (slack == to_string(SlackTreatment::none))
+    slack_treatment = SlackTreatment::none;
+  else if (slack == to_string(SlackTreatment::tension_field))
+    slack_treatment = SlackTreatment::tension_field;
+  else
+    throw std::invalid_argument("Finite elements/Slack treatment: unknown treatment '" + slack +
+                                "'");
   prm.leave_subsection();
 }
 

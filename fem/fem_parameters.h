@@ -15,6 +15,12 @@ enum class LinearSolverKind {
   gmres_amg,  // GMRES with BoomerAMG: when the tangent is not positive definite
 };
 
+// How the membrane treats slack (docs/model.md, "Slack: the tension field").
+enum class SlackTreatment {
+  none,           // the law as given: compression is as stiff as tension
+  tension_field,  // the law relaxed: no stress across wrinkles, none where slack every way
+};
+
 struct FemParameters {
   // Polynomial degree of the position field on triangles, 1 or 2. Degree 1 makes the assembled
   // internal force that of the mass-spring backend's triangle element; degree 2 (quadratic
@@ -43,6 +49,10 @@ struct FemParameters {
   // Levenberg-Marquardt shift mu = theta |R|_max / h (N/m) of each Newton system; theta here,
   // dimensionless. Zero turns it off.
   double residual_shift_factor = 1.0;
+  SlackTreatment slack_treatment = SlackTreatment::none;
+  // Under the tension field, the fraction of the law's own stiffness kept where the fabric is
+  // wrinkled or slack (dimensionless): it keeps one equilibrium where nothing pulls across.
+  double compression_stiffness_fraction = 1e-2;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   // Reads the subsection; throws std::invalid_argument naming the entry on a bad value.
@@ -50,5 +60,6 @@ struct FemParameters {
 };
 
 const char* to_string(LinearSolverKind kind);
+const char* to_string(SlackTreatment treatment);
 
 }  // namespace tightfit

@@ -8,15 +8,9 @@
 
 #include "contact/cylinder.h"
 #include "core/backend.h"
-#include "core/constrained_directions.h"
-#include "massspring/bending_hinges.h"
-#include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
-#include "massspring/seam_springs.h"
-#include "massspring/triangle_elements.h"
-#include "massspring/unwelded_panels.h"
+#include "massspring/open_seam_garment.h"
 
-#include <memory>
 #include <vector>
 
 namespace tightfit {
@@ -47,31 +41,13 @@ class FlatPanelStart {
   // `step` when they have not closed within Mass spring/Maximum frames or the motion diverges.
   FlatPanelResult run(const LoadStep& step);
 
-  const UnweldedPanels& panels() const { return panels_; }
+  const UnweldedPanels& panels() const { return garment_.panels(); }
 
  private:
-  // Membrane + bending + seam + contact (+ gravity) force into `force`, held components
-  // removed, N.
-  void forces(const std::vector<Vec3>& x, bool gravity_on, std::vector<Vec3>& force) const;
-  // One classical RK4 frame of x' = v, v' = f(x)/m - c v from (x_, v_).
-  void rk4_frame(double dt_s, double damping_per_s, bool gravity_on);
-  double choose_time_step_s() const;
-
   Problem problem_;
   const Cylinder* cylinder_;
   MassSpringParameters parameters_;
-  UnweldedPanels panels_;
-  TriangleElements elements_;
-  BendingHinges hinges_;
-  SeamSprings seams_;
-  std::vector<double> mass_kg_;
-  std::vector<double> rest_vertex_area_m2_;
-  ConstrainedDirections constrained_;
-  double mean_edge_m_ = 0.0;
-  double size_m_ = 0.0;
-
-  std::vector<Vec3> x_, v_;
-  DampedRk4 integrator_;
+  OpenSeamGarment garment_;
 };
 
 }  // namespace tightfit

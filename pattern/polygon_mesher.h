@@ -30,9 +30,9 @@ double mesh_vertex_budget(const std::vector<Vec2>& outline_m, double edge_length
 // `outline_m`: a simple polygon, counter-clockwise, its last point not repeating the first.
 // Triangles are refined until every edge is at most `edge_length_m` and every angle at least
 // `min_angle_deg` (CGAL guarantees termination up to about 20.7 degrees and usually reaches
-// 30). Throws std::invalid_argument for a bad polygon or bound: an outline that crosses itself
-// or turns back along itself, or a mesh of more than `max_vertices` (0: mesh_vertex_budget of
-// this outline).
+// 30). Throws std::invalid_argument for a bad polygon or bound: an outline that crosses itself,
+// turns back along itself or has a corner under a degree (a spike or a slit), or a mesh of more
+// than `max_vertices` (0: mesh_vertex_budget of this outline).
 PolygonMesh mesh_polygon(const std::vector<Vec2>& outline_m, double edge_length_m,
                          double min_angle_deg, double max_vertices = 0);
 

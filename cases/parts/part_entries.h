@@ -25,6 +25,7 @@ PartEntry<BodyMaker> morph_body_entry();
 PartEntry<PlacementMaker> tube_round_cylinder_placement_entry();
 PartEntry<PlacementMaker> flat_on_plane_placement_entry();
 PartEntry<PlacementMaker> tube_round_axis_placement_entry();
+PartEntry<PlacementMaker> dressing_placement_entry();
 
 // Measurements (Measurements/List).
 PartEntry<MeasurementMaker> cylinder_theory_measurement_entry();

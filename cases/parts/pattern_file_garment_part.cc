@@ -4,6 +4,7 @@
 #include "pattern/pattern_file.h"
 #include "pattern/pattern_garment.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace tightfit {
@@ -12,6 +13,20 @@ namespace {
 
 // The case file's own declarations, added to what the file says.
 void add_declarations(pattern::Pattern& p, ParameterTree& prm) {
+  // Only the panels asked for (a top without its bindings), before anything refers to them.
+  const std::vector<std::string> kept = prm.get_list("Panels");
+  for (const std::string& name : kept) {
+    bool found = false;
+    for (const auto& panel : p.panels) found = found || panel.name == name;
+    if (!found) throw std::invalid_argument("Panels: the pattern has no panel '" + name + "'");
+  }
+  if (!kept.empty())
+    p.panels.erase(std::remove_if(p.panels.begin(), p.panels.end(),
+                                  [&](const pattern::PanelOutline& panel) {
+                                    return std::find(kept.begin(), kept.end(), panel.name) ==
+                                           kept.end();
+                                  }),
+                   p.panels.end());
   for (const auto& seam : pattern::parse_seam_list(prm.get("Seams"))) p.seams.push_back(seam);
   pattern::declare_folds(p, prm.get("Fold edges"));
   pattern::declare_mirrored(p, prm.get_list("Mirrored panels"));
@@ -46,6 +61,9 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                      "Mesh a rectangle along its grain whose seams all join such rectangles as "
                      "the tube's regular grid (Garment/Edge length weft and warp), as "
                      "Garment/Kind = tube does.");
+    prm.declare_text("Panels", "",
+                     "The pattern's pieces to cut, a comma-separated list of panel names; "
+                     "empty: every piece.");
     prm.declare_text("Seams", "",
                      "Seams besides the file's: 'PANEL:EDGE[+EDGE] [reversed] -- "
                      "PANEL:EDGE[+EDGE] [reversed]', separated by ';'. Each side's start meets "

@@ -75,22 +75,28 @@ TEST_P(CylinderTable2, ClosedFormSensorsAndStampsAgree) {
   for (const StepMeasurement& m : run.steps) {
     std::printf("%s: alpha %.1f  p %.2f Pa  closed form %.2f Pa  error %+.3f%%\n", backend.c_str(),
                 m.alpha, m.p_mean_Pa(), m.p_theory_Pa, 100 * m.rel_error);
-    // Within 1% (measured at most 0.68%, the header).
-    EXPECT_LT(std::abs(m.rel_error), 0.01) << "alpha " << m.alpha;
+    // Linear triangles inscribe a polygon in the circle: the pressure reads low, measured
+    // -0.31% to -0.67% on both backends (the header); one-sided, tolerance -1%.
+    EXPECT_LT(m.rel_error, 0.0) << "alpha " << m.alpha;
+    EXPECT_GT(m.rel_error, -0.01) << "alpha " << m.alpha;
     EXPECT_EQ(m.summary.contact_fraction, 1.0);
     mean_Pa[m.step] = m.p_mean_Pa();
   }
 
   const auto sensors = read_csv((out / "sensors.csv").string());
   ASSERT_EQ(sensors.size(), 11 * alphas.size());
-  double worst_sensor = 0.0;
+  double worst_sensor = 0.0, covered_range[2] = {2.0, 0.0}, worst_grain_deg = 0.0;
   for (const auto& row : sensors) {
     const double mean = mean_Pa.at(std::stoi(row.at("step")));
     const double error = std::stod(row.at("p_sensor_Pa")) / mean - 1.0;
     worst_sensor = std::max(worst_sensor, std::abs(error));
     // The garment covers the disc: the area found over it is pi d^2 / 4 plus the curved
-    // surface's excess and the sub-triangles' cut (measured +0.4% to +0.67%); tolerance 1%.
-    EXPECT_NEAR(std::stod(row.at("covered_area_m2")) / (M_PI * 0.0075 * 0.0075), 1.0, 0.01);
+    // surface's excess and the sub-triangles' cut, which goes either way (measured -0.38% to
+    // +0.67% over both backends and all steps); tolerance 1%.
+    const double covered = std::stod(row.at("covered_area_m2")) / (M_PI * 0.0075 * 0.0075);
+    covered_range[0] = std::min(covered_range[0], covered);
+    covered_range[1] = std::max(covered_range[1], covered);
+    EXPECT_NEAR(covered, 1.0, 0.01);
     // The uniform state: measured within 6e-5 of the mean; tolerance 2e-4.
     EXPECT_LT(std::abs(error), 2e-4) << row.at("sensor") << " step " << row.at("step");
   }
@@ -102,11 +108,17 @@ TEST_P(CylinderTable2, ClosedFormSensorsAndStampsAgree) {
     worst_stamp = std::max(worst_stamp, std::abs(difference));
     // Measured at most 0.16%; tolerance 0.3%.
     EXPECT_LT(std::abs(difference), 0.003) << row.at("stamp") << " step " << row.at("step");
-    // The hoop is the weft: the largest stretch lies along it.
-    EXPECT_LT(std::abs(std::stod(row.at("grain_angle_max_deg"))), 1.0);
+    // The hoop is the weft: the largest stretch lies along it (measured within 0.0097 degrees
+    // on the mass-spring backend, 5e-9 on the FE backend); tolerance 0.02 degrees.
+    const double grain_deg = std::abs(std::stod(row.at("grain_angle_max_deg")));
+    worst_grain_deg = std::max(worst_grain_deg, grain_deg);
+    EXPECT_LT(grain_deg, 0.02);
   }
-  std::printf("%s: worst sensor %.2e, worst stamp %.2e\n", backend.c_str(), worst_sensor,
-              worst_stamp);
+  std::printf(
+      "%s: worst sensor %.2e, worst stamp %.2e, covered area / disc %.5f to %.5f, grain angle of "
+      "the largest stretch up to %.3g deg\n",
+      backend.c_str(), worst_sensor, worst_stamp, covered_range[0], covered_range[1],
+      worst_grain_deg);
   std::filesystem::remove_all(out);
 }
 

@@ -65,8 +65,10 @@ TEST_P(TubeOnCone, FrictionlessTubeSlidesOffTheNarrowEnd) {
   const double shift = r.mean_shift_m(kAxis);
   std::printf("%s, mu 0: shift %.4f m (slide-off %.4f m), contact fraction %.3f\n", GetParam(),
               shift, slide_off_m(), r.last().summary.contact_fraction);
-  EXPECT_LT(shift, -0.5 * slide_off_m());
-  EXPECT_LT(r.last().summary.contact_fraction, 1.0);
+  // Measured -0.93 slide-off (the stop rule ends the slow tail as it comes loose); -0.8.
+  EXPECT_LT(shift, -0.8 * slide_off_m());
+  // Loose but for the ring at the narrow end: measured 1/3 (one ring of three touches).
+  EXPECT_LT(r.last().summary.contact_fraction, 0.5);
 }
 
 // The tubes that hold have an equilibrium on the cone, which both backends reach; those that
@@ -103,8 +105,10 @@ TEST_P(TubeOnCone, SlidesWhenTanHalfAngleIsAboveMu) {
   const double shift = r.mean_shift_m(kAxis);
   std::printf("%s, mu %.3f: shift %.4f m (slide-off %.4f m), contact fraction %.3f\n", GetParam(),
               0.8 * kTanHalfAngle, shift, slide_off_m(), r.last().summary.contact_fraction);
-  EXPECT_LT(shift, -0.5 * slide_off_m());
-  EXPECT_LT(r.last().summary.contact_fraction, 1.0);
+  // Measured -0.75 slide-off: friction slows the tail the stop rule ends; -0.6.
+  EXPECT_LT(shift, -0.6 * slide_off_m());
+  // Measured 1/3: only the ring at the narrow end still touches.
+  EXPECT_LT(r.last().summary.contact_fraction, 0.5);
 }
 
 TEST_P(TubeHoldingOnCone, StifferTangentialPenaltyChangesNothing) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -94,6 +95,7 @@ TEST(BodyMeshHostileInput, FuzzFindingsAreRefused) {
     const std::string message = refusal(path);
     EXPECT_NE(message.find(path), std::string::npos)
         << name << " was accepted or crashed: " << message;
+    std::printf("%s: %s\n", name.c_str(), message.c_str());
     ++n;
   }
   std::printf("%d fuzz findings refused\n", n);

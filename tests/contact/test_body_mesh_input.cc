@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,7 +54,7 @@ TEST(BodyMeshInput, WrongNumbersInObj) {
   const std::string path = temporary_path("letters.obj");
   write_text(path,
              "v 1 1 1\nv 1 -1 x1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
-  expect_refused(path, {"line 2", "'x1' is not a number"});
+  expect_refused(path, {"line 2", "'x1' is not a finite number"});
   write_text(path, "v 1 1 1\nv 1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
   expect_refused(path, {"line 2", "three coordinates"});
   // Face indices are checked against the file's lines before VTK reads it (VTK follows a
@@ -132,6 +133,32 @@ TEST(BodyMeshInput, InwardFacing) {
   const std::string path = temporary_path("inward.obj");
   write_text(path, tetrahedron_vertices + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   expect_refused(path, {"oriented inwards", "-2.66667"});
+}
+
+// A coordinate that is not a finite number reaches no distance query. OBJ and ASCII STL spell
+// it "nan" or "inf", a binary STL holds the bits. VTK's OBJ reader reads "nan" as 0 (the file
+// was accepted with a wrong vertex): refused naming the line before VTK reads it; the STL
+// reader passes such values through and the vertex is refused after.
+TEST(BodyMeshInput, CoordinatesThatAreNotFiniteInObjAndStl) {
+  const std::string obj = temporary_path("nan.obj");
+  write_text(obj,
+             "v 1 1 1\nv 1 -1 -1\nv -1 nan -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+  expect_refused(obj, {"line 3", "'nan' is not a finite number"});
+  const std::string stl = temporary_path("inf.stl");
+  write_text(stl,
+             "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+             "vertex 0 inf 0\nendloop\nendfacet\nendsolid t\n");
+  expect_refused(stl, {"not a finite number"});
+  std::string binary(80, ' ');
+  const std::uint32_t one = 1;
+  binary.append(reinterpret_cast<const char*>(&one), 4);
+  const float nan = std::nanf("");
+  const float facet[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, nan, 0};
+  binary.append(reinterpret_cast<const char*>(facet), sizeof facet);
+  binary.append(2, '\0');
+  const std::string binary_stl = temporary_path("nan_binary.stl");
+  write_text(binary_stl, binary);
+  expect_refused(binary_stl, {"not a finite number"});
 }
 
 TEST(BodyMeshInput, DegenerateFaces) {

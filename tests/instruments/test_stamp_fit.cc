@@ -71,10 +71,12 @@ TEST(StampFit, SheetWrappedRoundACylinderReadsTheHoopTensionOverTheRadius) {
   const StampFit fit = fit_stamp(mesh, x, stamp, cylinder);
   // The flat triangles inscribe the circle: 5 mm rest edges at hoop stretch 1.3 on a 6 cm
   // radius shorten the hoop by (a h / r)^2 / 24 = 4.9e-4 between vertices; measured -6.1e-4
-  // (hoop) and +1.5e-4 (axial) relative. Tolerance 1e-3 (both stretches).
-  EXPECT_NEAR(fit.stretch_max / a, 1.0, 1e-3);
-  EXPECT_NEAR(fit.stretch_min / b, 1.0, 1e-3);
-  EXPECT_NEAR(fit.grain_angle_max_deg, 0.0, 0.01);
+  // (hoop: one-sided, tolerance -1e-3) and +1.5e-4 (axial, tolerance 3e-4) relative.
+  EXPECT_LT(fit.stretch_max / a, 1.0);
+  EXPECT_GT(fit.stretch_max / a, 1.0 - 1e-3);
+  EXPECT_NEAR(fit.stretch_min / b, 1.0, 3e-4);
+  // The hoop is the weft exactly (measured 1e-15 degrees): rounding only.
+  EXPECT_NEAR(fit.grain_angle_max_deg, 0.0, 1e-9);
   // Eq. 3 with the law's stresses at the fitted deformation: the hoop tension per current
   // length over the radius, n = a S11 a / (a b) read from the law at the exact stretches.
   FabricParameters fabric;
@@ -85,13 +87,17 @@ TEST(StampFit, SheetWrappedRoundACylinderReadsTheHoopTensionOverTheRadius) {
   const Mat2 S = law->stress(C);
   const double hoop_tension = a * a * S(0, 0) / (a * b);
   const Eq3Estimate eq3 = eq3_pressure(fit, *law, cylinder);
-  std::printf("wrapped sheet: stretches %+.2e %+.2e relative, Eq. 3 %+.2e relative\n",
-              fit.stretch_max / a - 1.0, fit.stretch_min / b - 1.0,
-              eq3.pressure_Pa / (hoop_tension / r) - 1.0);
+  std::printf(
+      "wrapped sheet: stretches %+.2e %+.2e relative, grain angle %.2e deg, Eq. 3 %+.2e "
+      "relative\n",
+      fit.stretch_max / a - 1.0, fit.stretch_min / b - 1.0, fit.grain_angle_max_deg,
+      eq3.pressure_Pa / (hoop_tension / r) - 1.0);
   EXPECT_NEAR(eq3.curvature_max_per_m, 1.0 / r, 1e-6 / r);
   EXPECT_NEAR(eq3.curvature_min_per_m, 0.0, 1e-6 / r);
-  // Measured 0.3% low (the inscribed polygon's shortfall times d ln T / d ln a); tolerance 1%.
-  EXPECT_NEAR(eq3.pressure_Pa / (hoop_tension / r), 1.0, 0.01);
+  // Measured 0.31% low (the inscribed polygon's shortfall times d ln T / d ln a): one-sided,
+  // tolerance 0.5% low.
+  EXPECT_LT(eq3.pressure_Pa / (hoop_tension / r), 1.0);
+  EXPECT_GT(eq3.pressure_Pa / (hoop_tension / r), 1.0 - 0.005);
 }
 
 TEST(StampFit, AStampLeavingItsPanelIsRefusedByName) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace tightfit {
 namespace {
@@ -91,7 +92,10 @@ TEST(BendingHinges, SheetWrappedOnACylinderStoresTheContinuumEnergyToWithinAFact
   }
   const double continuum = 0.5 * rigidity_N_m / (radius * radius) * width * height;
   const double ratio = hinges.energy_J(x) / continuum;
-  EXPECT_GT(ratio, 0.5);
+  std::printf("hinge energy / continuum energy %.4f\n", ratio);
+  // Measured 2.77 on this mesh. One-sided: the diagonal hinges bend besides the row hinges,
+  // so the energy reads above the continuum's; the upper bound is the factor three, 8% above.
+  EXPECT_GT(ratio, 1.0);
   EXPECT_LT(ratio, 3.0);
 }
 

@@ -40,18 +40,35 @@ TEST_F(PatternFiles, OutlineThatCrossesItselfIsRefusedNamingThePanel) {
   EXPECT_NE(message.find("panel 'tie': the outline crosses itself"), std::string::npos) << message;
 }
 
-TEST_F(PatternFiles, SpikeFarNarrowerThanTheEdgeLengthIsRefusedNamingThePanel) {
+TEST_F(PatternFiles, SpikeSharperThanADegreeIsRefusedNamingThePanelAndTheCorner) {
   // 100 mm wide and 11.1 m tall, the top corner a spike of 0.26 degrees (its sides run from
   // (100, 11100) down to (100, 0) and towards (50, 130)): the angle bound would refine towards
   // its tip without end: each meshing round added about 200 outline points, 16 rounds and
-  // 38 s under the sanitizers before the mesher had a budget. Its budget, 10 x (2 A /
-  // (sqrt(3) h^2) + L / h + outline points) + 1000, is 1846 vertices, passed in round 10.
+  // 38 s under the sanitizers before the mesher refused corners under a degree. Its sides'
+  // tangents meet at atan(50 / 10970) = 0.261 degrees, its sampled chords at 0.264 (SVG's y
+  // runs down: the tip is at y = -11.1 m).
   const std::string path = write("spike.svg", R"(<svg width="200mm">
     <g id="fs-stack-test.spike-part-test.spike">
       <path class="fabric" id="p" d="M 0,0 l 100,0 V 11100 Q 50,130 0,100 C 0,66 0,33 0,1 z"/>
     </g></svg>)");
   const std::string message = refusal(path, 0.555);
-  EXPECT_NE(message.find("panel 'spike': meshing at edge length 0.555000 m took more than"),
+  EXPECT_NE(message.find("panel 'spike': the outline turns back at (0.1, -11.1) m in a corner of "
+                         "0.264 degrees"),
+            std::string::npos)
+      << message;
+}
+
+TEST_F(PatternFiles, NeckFarNarrowerThanTheEdgeLengthIsRefusedNamingThePanel) {
+  // Two 100 mm squares joined by a neck 1 m long and 0.1 mm wide, meshed at 5 cm: the angle
+  // bound makes triangles as small as the neck is wide along all of it (some 10^4 vertices).
+  // The budget, 10 x (2 A / (sqrt(3) h^2) + L / h + outline points) + 1000, is about 1700.
+  const std::string path = write("neck.svg", R"(<svg width="200mm">
+    <g id="fs-stack-test.neck-part-test.neck">
+      <path class="fabric" id="p"
+            d="M 0,0 H 100 V 50 H 1100 V 0 H 1200 V 100 H 1100 V 50.1 H 100 V 100 H 0 z"/>
+    </g></svg>)");
+  const std::string message = refusal(path, 0.05);
+  EXPECT_NE(message.find("panel 'neck': meshing at edge length 0.050000 m took more than"),
             std::string::npos)
       << message;
   EXPECT_NE(message.find("far narrower than the edge length"), std::string::npos) << message;

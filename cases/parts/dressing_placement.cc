@@ -1,0 +1,151 @@
+// Placement/Kind = dressing: the garment's panels, unsewn, wrapped on an elliptic cylinder round
+// an axis outside the body (contact/panel_wrap.h), then sewn onto the body by the dressing stage
+// (massspring/dressing.h): seam springs close the seams while the body grows from a shrunk
+// start to its shape; the welded garment is the start of the load steps, on either backend
+// (docs/dressing.md).
+#include "cases/parts/part_entries.h"
+#include "cases/scenario.h"
+#include "contact/panel_wrap.h"
+#include "massspring/dressing.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+
+// "front: 0, back: 180" -> degrees by panel name.
+std::map<std::string, double> parse_angles(const std::vector<std::string>& words) {
+  std::map<std::string, double> angles;
+  for (const std::string& word : words) {
+    const auto colon = word.rfind(':');
+    if (colon == std::string::npos)
+      throw std::invalid_argument("Panel angles: '" + word + "' is not PANEL:DEGREES");
+    std::string name = word.substr(0, colon);
+    while (!name.empty() && name.back() == ' ') name.pop_back();
+    try {
+      std::size_t used = 0;
+      const std::string number = word.substr(colon + 1);
+      angles[name] = std::stod(number, &used);
+      if (number.find_first_not_of(' ', used) != std::string::npos) throw std::invalid_argument("");
+    } catch (const std::exception&) {
+      throw std::invalid_argument("Panel angles: '" + word + "' has no angle in degrees");
+    }
+  }
+  return angles;
+}
+
+}  // namespace
+
+PartEntry<PlacementMaker> dressing_placement_entry() {
+  PartEntry<PlacementMaker> e;
+  e.name = "dressing";
+  e.subsection = "Dressing";
+  e.description =
+      "the panels unsewn on an elliptic cylinder round an axis, sewn onto the body by seam "
+      "springs while the body grows from a shrunk start (docs/dressing.md).";
+  e.declare_parameters = [](ParameterTree& prm) {
+    prm.declare_vector("Centre", "0,0,0",
+                       "A point on the axis, and the point the body is scaled about (m).");
+    prm.declare_vector("Axis", "0,0,1", "Direction of the axis the panels are wrapped round (-).");
+    prm.declare_vector("Front", "0,-1,0",
+                       "The body's front, the direction of angle 0 round the axis (-); angles "
+                       "grow towards Axis x Front (the body's left for z up and front -y).");
+    prm.declare_double("Semi-axis side", 0.15, 0, ParameterTree::unbounded,
+                       "Semi-axis of the elliptic cylinder along Axis x Front (m).");
+    prm.declare_double("Semi-axis front", 0.15, 0, ParameterTree::unbounded,
+                       "Semi-axis of the elliptic cylinder along Front (m).");
+    prm.declare_double("Hem height", 0, -ParameterTree::unbounded, ParameterTree::unbounded,
+                       "Where each panel's lowest point goes along the axis from Centre (m); "
+                       "pattern y runs up the axis from there.");
+    prm.declare_text("Panel angles", "",
+                     "Where each panel's middle goes round the axis: 'PANEL:DEGREES, ...' from "
+                     "Front; empty: panel k of n at 360 k / n degrees.");
+    prm.declare_selection("Scale about", "axis", "point|axis",
+                          "The body shrinks about the Axis through Centre (heights kept) or "
+                          "about the point Centre.");
+    prm.declare_double("Start scale", 0.7, 0.05, 1,
+                       "The body's scale about Centre or the axis at the start of the dressing "
+                       "(-).");
+    prm.declare_integer("Growth frames", 2000, 0, 100000000,
+                        "RK4 frames over which the body grows linearly to its own size.");
+    prm.declare_integer("Seam ramp frames", 500, 0, 100000000,
+                        "RK4 frames over which the seam springs' stiffness rises linearly from "
+                        "zero to full.");
+    prm.declare_double("Seam stiffness factor", 20, 0, ParameterTree::unbounded,
+                       "Each zero-rest-length seam spring's stiffness over the law's stiffness "
+                       "scale (-).");
+    prm.declare_double("Closed gap", 0.05, 0, ParameterTree::unbounded,
+                       "The seams are closed when every seam vertex pair is closer than this "
+                       "fraction of the mean rest edge length (-); they are then welded.");
+    prm.declare_integer("Maximum frames", 40000, 1, 100000000,
+                        "Frames the seams have to close in; beyond them the dressing fails "
+                        "naming the seam with the widest gap.");
+  };
+  e.parse = [](ParameterTree& prm) -> PlacementMaker {
+    PanelWrap wrap;
+    wrap.centre_m = prm.get_vector("Centre");
+    wrap.axis = prm.get_vector("Axis");
+    wrap.front = prm.get_vector("Front");
+    wrap.semi_axis_side_m = prm.get_double("Semi-axis side");
+    wrap.semi_axis_front_m = prm.get_double("Semi-axis front");
+    wrap.hem_height_m = prm.get_double("Hem height");
+    if (!(wrap.semi_axis_side_m > 0 && wrap.semi_axis_front_m > 0))
+      throw std::invalid_argument("Semi-axis side and Semi-axis front must be positive (m)");
+    if (!(wrap.axis.norm() > 0)) throw std::invalid_argument("Axis must not be zero");
+    const std::map<std::string, double> angles_deg = parse_angles(prm.get_list("Panel angles"));
+    DressingSettings settings;
+    settings.centre_m = wrap.centre_m;
+    if (prm.get("Scale about") == "axis") settings.scale_axis = wrap.axis;
+    settings.start_scale = prm.get_double("Start scale");
+    settings.growth_frames = prm.get_integer("Growth frames");
+    settings.seam_ramp_frames = prm.get_integer("Seam ramp frames");
+    settings.mass_spring.seam_stiffness_factor = prm.get_double("Seam stiffness factor");
+    settings.closed_fraction = prm.get_double("Closed gap");
+    settings.maximum_frames = prm.get_integer("Maximum frames");
+    settings.progress = &std::cout;
+    return [=](const Scenario& scenario) {
+      PanelWrap placed = wrap;
+      const std::vector<Panel>& panels = scenario.garment.panels;
+      for (std::size_t p = 0; p < panels.size(); ++p) {
+        double degrees = 360.0 * double(p) / double(panels.size());
+        if (!angles_deg.empty()) {
+          const auto found = angles_deg.find(panels[p].name);
+          if (found == angles_deg.end())
+            throw std::invalid_argument("Placement/Dressing/Panel angles: no angle for panel '" +
+                                        panels[p].name + "'");
+          degrees = found->second;
+        }
+        placed.panel_angles_rad.push_back(degrees * M_PI / 180.0);
+      }
+      for (const auto& [name, degrees] : angles_deg) {
+        bool known = false;
+        for (const Panel& panel : panels) known = known || panel.name == name;
+        if (!known)
+          throw std::invalid_argument(
+              "Placement/Dressing/Panel angles: the garment has no panel '" + name + "'");
+      }
+      const std::vector<Vec3> open =
+          wrap_panels_round_axis(scenario.garment, scenario.mesh, placed);
+      try {
+        const DressingResult dressed = dress(scenario.problem, scenario.garment, open, settings);
+        std::printf(
+            "  dressing: seams closed (largest gap %.3g m < %.3g m) after %d frames, %.1f s; %d "
+            "welded vertices put back on the body from at most %.3g m inside\n",
+            dressed.largest_seam_gap_m, dressed.closed_below_m, dressed.frames,
+            dressed.wall_seconds, dressed.vertices_put_back, dressed.deepest_m);
+        std::fflush(stdout);
+        return dressed.welded_positions_m;
+      } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(std::string("Placement/Dressing: ") + error.what());
+      }
+    };
+  };
+  return e;
+}
+
+}  // namespace tightfit

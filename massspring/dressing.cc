@@ -1,0 +1,193 @@
+#include "massspring/dressing.h"
+
+#include "contact/rigid_body.h"
+#include "contact/scaled_body.h"
+#include "core/interruption.h"
+#include "massspring/open_seam_garment.h"
+#include "massspring/unwelded_panels.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+
+// The panel an unwelded vertex belongs to, and its index in that panel.
+std::pair<int, int> panel_vertex(const SimulationMesh& mesh, int u) {
+  const auto& offsets = mesh.panel_vertex_offset;
+  const int p = int(std::upper_bound(offsets.begin(), offsets.end(), u) - offsets.begin()) - 1;
+  return {p, u - offsets[p]};
+}
+
+bool lists(const std::vector<int>& edge, int vertex) {
+  return std::find(edge.begin(), edge.end(), vertex) != edge.end();
+}
+
+std::string where(const Vec3& x) {
+  std::ostringstream out;
+  out << "(" << x.x() << ", " << x.y() << ", " << x.z() << ") m";
+  return out.str();
+}
+
+double ramp(int frame, int frames) {
+  return frames <= 0 ? 1.0 : std::min(1.0, double(frame) / frames);
+}
+
+}  // namespace
+
+std::string seam_joining(const Garment& garment, const SimulationMesh& mesh, int a, int b) {
+  const auto [pa, va] = panel_vertex(mesh, a);
+  const auto [pb, vb] = panel_vertex(mesh, b);
+  for (const Seam& seam : garment.seams) {
+    const auto& edges_a = garment.panels[seam.panel_a].edges;
+    const auto& edges_b = garment.panels[seam.panel_b].edges;
+    const auto on = [](const std::map<std::string, std::vector<int>>& edges,
+                       const std::string& name, int v) {
+      const auto found = edges.find(name);
+      return found != edges.end() && lists(found->second, v);
+    };
+    const bool forward = seam.panel_a == pa && seam.panel_b == pb && on(edges_a, seam.edge_a, va) &&
+                         on(edges_b, seam.edge_b, vb);
+    const bool backward = seam.panel_a == pb && seam.panel_b == pa &&
+                          on(edges_a, seam.edge_a, vb) && on(edges_b, seam.edge_b, va);
+    if (forward || backward)
+      return garment.panels[seam.panel_a].name + ":" + seam.edge_a + " -- " +
+             garment.panels[seam.panel_b].name + ":" + seam.edge_b;
+  }
+  return "the seam joining " + garment.panels[pa].name + " vertex " + std::to_string(va) + " and " +
+         garment.panels[pb].name + " vertex " + std::to_string(vb);
+}
+
+DressingResult dress(const Problem& problem, const Garment& garment,
+                     const std::vector<Vec3>& start_m, const DressingSettings& settings) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  if (!problem.body) throw std::invalid_argument("dressing: the problem has no body");
+  if (!(settings.start_scale > 0.0 && settings.start_scale <= 1.0))
+    throw std::invalid_argument("dressing: the body's start scale must lie in (0, 1]");
+  const SimulationMesh& welded = *problem.mesh;
+  OpenSeamGarment open(problem, settings.mass_spring);
+  if (static_cast<int>(start_m.size()) != welded.n_unwelded_vertices())
+    throw std::invalid_argument("dressing: " + std::to_string(start_m.size()) +
+                                " start positions for " +
+                                std::to_string(welded.n_unwelded_vertices()) + " panel vertices");
+  ScaledBody body = settings.scale_axis
+                        ? ScaledBody(*problem.body, settings.centre_m, *settings.scale_axis)
+                        : ScaledBody(*problem.body, settings.centre_m);
+  body.set_scale(settings.start_scale);
+  open.set_body(&body);
+
+  std::vector<Vec3>& x = open.positions();
+  std::vector<Vec3>& v = open.velocities();
+  x = start_m;
+  std::fill(v.begin(), v.end(), Vec3::Zero());
+  for (std::size_t u = 0; u < x.size(); ++u) {
+    const double g = body.query(x[u]).signed_distance_m;
+    if (g < 0.0) {
+      const auto [p, i] = panel_vertex(welded, int(u));
+      std::ostringstream message;
+      message << "dressing: panel " << garment.panels[p].name << " vertex " << i << " starts " << -g
+              << " m inside the body shrunk to " << settings.start_scale << " at " << where(x[u])
+              << "; place the panels further out or shrink the body more";
+      throw std::invalid_argument(message.str());
+    }
+  }
+
+  DressingResult result;
+  result.closed_below_m = settings.closed_fraction * open.mean_edge_m();
+  const double runaway_m = 10.0 * open.size_m();
+  const double damping = open.damping_per_s();
+  double dt = 0.0;
+  auto fail = [&](const std::string& what) {
+    const auto [a, b] = open.widest_seam_pair();
+    std::ostringstream message;
+    message << "dressing: " << what << " at frame " << result.frames << " (body scale "
+            << body.scale() << "); the widest seam gap is " << result.largest_seam_gap_m
+            << " m (closed below " << result.closed_below_m << " m)";
+    if (a >= 0)
+      message << ", on seam " << seam_joining(garment, welded, a, b) << " between " << where(x[a])
+              << " and " << where(x[b]);
+    return SolverError(message.str());
+  };
+
+  // How far the body's surface can move as its scale changes by ds: ds times the farthest
+  // distance of its surface from the centre (or the axis).
+  double reach_m = 0.0;
+  {
+    const DisplayMesh surface = problem.body->display_mesh();
+    for (const Vec3& p : surface.vertices_m) {
+      Vec3 d = p - settings.centre_m;
+      if (settings.scale_axis)
+        d -= d.dot(settings.scale_axis->normalized()) * settings.scale_axis->normalized();
+      reach_m = std::max(reach_m, d.norm());
+    }
+  }
+  for (;;) {
+    const double scale = settings.start_scale +
+                         (1.0 - settings.start_scale) * ramp(result.frames, settings.growth_frames);
+    open.body_moved(std::abs(scale - body.scale()) * reach_m * 1.01);
+    body.set_scale(scale);
+    open.set_clearance_factor(scale);
+    open.set_seam_fraction(ramp(result.frames + 1, settings.seam_ramp_frames));
+    // The stiffness bounds move with the shape (a stiffening law's tangent); cheap at this rate.
+    if (result.frames % 100 == 0) dt = open.time_step_s();
+    const bool quasi_static = result.frames < settings.mass_spring.quasi_static_frames;
+    if (quasi_static) std::fill(v.begin(), v.end(), Vec3::Zero());
+    open.rk4_frame(dt, quasi_static ? 0.0 : damping, false);
+    ++result.frames;
+    result.largest_seam_gap_m = open.largest_seam_gap_m();
+    if (settings.progress && result.frames % settings.progress_frames == 0)
+      *settings.progress
+          << "  dressing: frame " << result.frames << ", body scale " << body.scale()
+          << ", seam springs at " << ramp(result.frames, settings.seam_ramp_frames)
+          << " of full, widest seam gap " << result.largest_seam_gap_m << " m, "
+          << std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count()
+          << " s" << std::endl;
+    if (!std::isfinite(result.largest_seam_gap_m))
+      throw fail("diverged (non-finite position; try a smaller Mass spring/Time step)");
+    const bool whole = result.frames >= std::max(settings.growth_frames, settings.seam_ramp_frames);
+    if (whole && result.largest_seam_gap_m < result.closed_below_m) break;
+    if (result.frames >= settings.maximum_frames)
+      throw fail("the seams did not close within " + std::to_string(settings.maximum_frames) +
+                 " frames");
+    throw_if_interrupted(interruption_signal(),
+                         "during the dressing at frame " + std::to_string(result.frames));
+    if (result.frames % 64 == 0)
+      for (std::size_t u = 0; u < x.size(); ++u)
+        if (!((x[u] - start_m[u]).norm() < runaway_m))
+          throw fail("diverged (panel vertex " + std::to_string(u) + " ran away)");
+  }
+
+  // Welded; every vertex must lie outside the whole body. The penalty leaves vertices in
+  // contact p / k deep: those go back onto the surface along the distance's gradient.
+  result.welded_positions_m = weld_positions(welded, x);
+  const double allowed_m = settings.inside_fraction * open.mean_edge_m();
+  for (int w = 0; w < welded.n_vertices; ++w) {
+    Vec3& p = result.welded_positions_m[w];
+    const SurfacePoint s = problem.body->query(p);
+    if (s.signed_distance_m >= 0.0) continue;
+    if (-s.signed_distance_m > allowed_m) {
+      std::ostringstream message;
+      message << "dressing: welded vertex " << w << " ends " << -s.signed_distance_m
+              << " m inside the body at " << where(p) << " (more than " << allowed_m
+              << " m: the garment passed into the body; grow it more slowly with more "
+                 "growth frames, or start it further out)";
+      throw SolverError(message.str());
+    }
+    result.deepest_m = std::max(result.deepest_m, -s.signed_distance_m);
+    ++result.vertices_put_back;
+    // A step along the distance's gradient reaches a flat face; near an edge of a faceted
+    // body it may fall short, so step again from there.
+    for (SurfacePoint at = s; at.signed_distance_m < 0.0; at = problem.body->query(p))
+      p -= (at.signed_distance_m - 1e-9) * at.gap_gradient;
+  }
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return result;
+}
+
+}  // namespace tightfit

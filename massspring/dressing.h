@@ -1,0 +1,68 @@
+// Dressing a body (docs/dressing.md): the garment's panels, unsewn, start round the body
+// (wherever the caller put them, outside it), the body shrunk about a centre. Zero-rest-length
+// seam springs, their stiffness ramped up from zero, pull every seam vertex pair together while
+// the membrane, the bending springs and the penalty contact act, and the body grows back to its
+// own shape; when every seam pair is closer than the closing gap and the body is whole, the
+// seams are welded (each welded vertex at the mean of its copies) and the garment is handed to
+// the load steps, which settle it as usual. It is the paper's flat-panel start (Section 4.3,
+// FlatPanelStart) for any body and any pattern.
+#pragma once
+
+#include "core/backend.h"
+#include "massspring/massspring_parameters.h"
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+struct DressingSettings {
+  Vec3 centre_m = Vec3::Zero();  // the point the body is scaled about, or a point on the axis
+  // About an axis (lengths along it kept: heights stay, the body thins) when given.
+  std::optional<Vec3> scale_axis;
+  double start_scale = 0.7;    // the body's scale at the first frame (0, 1]
+  int growth_frames = 2000;    // frames over which the scale rises linearly to 1
+  int seam_ramp_frames = 500;  // frames over which the seam stiffness rises linearly to full
+  // The seams are closed when every seam vertex pair is closer than this fraction of the mean
+  // rest edge length (welding then moves no vertex by more than half of that).
+  double closed_fraction = 0.05;
+  // A welded vertex inside the whole body by at most this fraction of the mean rest edge length
+  // (the penalty's own depth, p / k) is put back on the surface; a deeper one has passed
+  // through the body and the dressing fails.
+  double inside_fraction = 0.25;
+  int maximum_frames = 40000;
+  // Time step, damping, quasi-static frames, bending and the seam springs' stiffness factor.
+  MassSpringParameters mass_spring;
+  // If given, a line every this many frames: frame, body scale, seam ramp, widest gap.
+  std::ostream* progress = nullptr;
+  int progress_frames = 1000;
+};
+
+struct DressingResult {
+  std::vector<Vec3> welded_positions_m;
+  int frames = 0;
+  double largest_seam_gap_m = 0.0;  // at the last frame, before welding
+  double closed_below_m = 0.0;      // the threshold it met
+  // Welded vertices inside the whole body after welding, put back on its surface, and the
+  // largest depth among them, m.
+  int vertices_put_back = 0;
+  double deepest_m = 0.0;
+  double wall_seconds = 0.0;
+};
+
+// Dresses `problem.body` (the whole body; it must outlive the call) in `garment` (whose welded
+// mesh is problem.mesh) from the unwelded positions `start_m` (panel vertices, numbered as
+// problem.mesh's). Throws SolverError when the seams have not closed within the frames
+// (naming the seam with the widest gap, the gap and where), when the motion diverges, or when
+// a vertex ends inside the body (which, how deep, where); std::invalid_argument for a start of
+// the wrong size or a vertex that starts inside the shrunk body.
+DressingResult dress(const Problem& problem, const Garment& garment,
+                     const std::vector<Vec3>& start_m, const DressingSettings& settings);
+
+// "front:3 -- back:3 mirrored": the seam of `garment` that joins unwelded vertices a and b of
+// its welded mesh, or the two panels and vertices when no seam lists them both.
+std::string seam_joining(const Garment& garment, const SimulationMesh& mesh, int a, int b);
+
+}  // namespace tightfit

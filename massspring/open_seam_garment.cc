@@ -1,0 +1,119 @@
+#include "massspring/open_seam_garment.h"
+
+#include "contact/penalty_contact.h"
+#include "contact/rigid_body.h"
+#include "massspring/lumped_mass.h"
+#include "massspring/stable_time_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tightfit {
+
+namespace {
+
+const Problem& complete(const Problem& problem) {
+  if (!problem.mesh || !problem.law || !problem.fabric)
+    throw std::invalid_argument("mass spring: the problem needs a mesh, a law and a fabric");
+  return problem;
+}
+
+}  // namespace
+
+OpenSeamGarment::OpenSeamGarment(const Problem& problem, const MassSpringParameters& parameters)
+    : problem_(complete(problem)),
+      body_(problem.body),
+      parameters_(parameters),
+      panels_(unweld(*problem.mesh)),
+      elements_(panels_.mesh, *problem.law),
+      hinges_(panels_.mesh, parameters.bending_rigidity_N_m),
+      full_seam_stiffness_N_per_m_(parameters.seam_stiffness_factor *
+                                   problem.law->stiffness_scale()),
+      seams_(panels_.seam_pairs, full_seam_stiffness_N_per_m_) {
+  parameters_.validate();
+  const SimulationMesh& welded = *problem_.mesh;
+  mass_kg_ = lumped_masses_kg(panels_.mesh, problem_.fabric->areal_density_kg_per_m2);
+  rest_vertex_area_m2_ = rest_vertex_areas_m2(panels_.mesh);
+  // A constrained welded vertex constrains every copy.
+  constrained_ =
+      ConstrainedDirections(problem_.constraints, welded.n_vertices).copies(welded.welded_index);
+  mean_edge_m_ = mean_rest_edge_length_m(welded);
+  size_m_ = std::sqrt(rest_area(welded));
+  for (auto* buffer : {&x_, &v_, &asked_at_m_})
+    buffer->assign(panels_.mesh.n_vertices, Vec3::Zero());
+  clearance_m_.assign(panels_.mesh.n_vertices, 0.0);
+}
+
+void OpenSeamGarment::set_body(const RigidBody* body) {
+  body_ = body;
+  std::fill(clearance_m_.begin(), clearance_m_.end(), 0.0);
+}
+
+void OpenSeamGarment::body_moved(double bound_m) {
+  for (double& c : clearance_m_) c -= bound_m;
+}
+
+void OpenSeamGarment::set_seam_fraction(double fraction) {
+  seams_ = SeamSprings(panels_.seam_pairs, fraction * full_seam_stiffness_N_per_m_);
+}
+
+void OpenSeamGarment::forces(const std::vector<Vec3>& x, bool gravity_on,
+                             std::vector<Vec3>& force) const {
+  std::fill(force.begin(), force.end(), Vec3::Zero());
+  elements_.add_forces(x, force);
+  hinges_.add_forces(x, force);
+  seams_.add_forces(x, force);
+  const double k = problem_.contact_stiffness_Pa_per_m;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (body_ && k > 0 && !((x[i] - asked_at_m_[i]).norm() < clearance_m_[i])) {
+      const SurfacePoint s = body_->query(x[i]);
+      asked_at_m_[i] = x[i];
+      clearance_m_[i] = clearance_factor_ * s.signed_distance_m;
+      force[i] += penalty_force_N(s, k, rest_vertex_area_m2_[i]);
+    }
+    if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
+  }
+}
+
+void OpenSeamGarment::rk4_frame(double dt, double c, bool gravity_on) {
+  integrator_.frame(x_, v_, mass_kg_, dt, c,
+                    [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
+                      forces(x, gravity_on, force);
+                      return 0.0;
+                    });
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, v_[i]);
+}
+
+double OpenSeamGarment::time_step_s() const {
+  if (parameters_.time_step_s > 0) return parameters_.time_step_s;
+  std::vector<double> stiffness(x_.size(), 0.0);
+  elements_.add_stiffness_bounds(x_, stiffness);
+  hinges_.add_stiffness_bounds(x_, stiffness);
+  // The full seam stiffness, whatever the ramp: the step stays stable as the ramp rises.
+  SeamSprings(panels_.seam_pairs, full_seam_stiffness_N_per_m_).add_stiffness_bounds(stiffness);
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
+  return stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety);
+}
+
+double OpenSeamGarment::damping_per_s() const {
+  return parameters_.damping_per_s > 0
+             ? parameters_.damping_per_s
+             : critical_damping_per_s(problem_.law->stiffness_scale(),
+                                      problem_.fabric->areal_density_kg_per_m2, size_m_);
+}
+
+std::pair<int, int> OpenSeamGarment::widest_seam_pair() const {
+  std::pair<int, int> widest{-1, -1};
+  double largest = -1.0;
+  for (const auto& [a, b] : panels_.seam_pairs) {
+    const double gap = (x_[a] - x_[b]).squaredNorm();
+    if (gap > largest) largest = gap, widest = {a, b};
+  }
+  return widest;
+}
+
+}  // namespace tightfit
