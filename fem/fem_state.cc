@@ -64,11 +64,14 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
   quadrature.shape_values = pattern.hat_values;
   for (const auto& v : pattern.cell_vertices)
     quadrature.cell_nodes.emplace_back(v.begin(), v.end());
-  quadrature.point_area_m2.assign(pattern.n_cells(), {});
   const unsigned int n_local = pattern.n_local_dofs();
   const unsigned int n_element_nodes = pattern.n_element_nodes();
-  for (int cell = 0; cell < pattern.n_cells(); ++cell)
-    for (unsigned int q = 0; q < pattern.cell_JxW_m2[cell].size(); ++q) {
+  const std::size_t n_points = pattern.quadrature.size();
+  // Each rank its own cells' points, summed over the ranks: every rank recovers all of it.
+  std::vector<double> point_area_m2(pattern.n_all_cells() * n_points, 0.0);
+  for (int cell = 0; cell < pattern.n_cells(); ++cell) {
+    if (!pattern.cell_owned[cell]) continue;
+    for (unsigned int q = 0; q < n_points; ++q) {
       // dA = |x,1 x x,2| dA_grain, x,i the columns of F = dx/dX_grain.
       Mat32 F = Mat32::Zero();
       for (unsigned int i = 0; i < n_local; ++i)
@@ -77,9 +80,16 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
             pattern.cell_grad_grain[cell][q * n_element_nodes + pattern.local_node[i]].transpose();
       const double grain_area_m2 =
           pattern.cell_JxW_m2[cell][q] * pattern.cell_grain_area_ratio[cell];
-      quadrature.point_area_m2[cell].push_back(Vec3(F.col(0)).cross(Vec3(F.col(1))).norm() *
-                                               grain_area_m2);
+      point_area_m2[pattern.cell_index[cell] * n_points + q] =
+          Vec3(F.col(0)).cross(Vec3(F.col(1))).norm() * grain_area_m2;
     }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, point_area_m2.data(), static_cast<int>(point_area_m2.size()),
+                MPI_DOUBLE, MPI_SUM, pattern.comm);
+  quadrature.point_area_m2.resize(pattern.n_all_cells());
+  for (int cell = 0; cell < pattern.n_all_cells(); ++cell)
+    quadrature.point_area_m2[cell].assign(point_area_m2.begin() + cell * n_points,
+                                          point_area_m2.begin() + (cell + 1) * n_points);
   const auto& edge_ends = pattern.edge_ends;
   // The loads against the vertex hats of nodal normal loads (a midpoint's to its edge's ends).
   const auto hat_loads = [&](const std::vector<double>& node_load_N) {

@@ -31,9 +31,10 @@ unsigned int gauss_points_1d(int element_degree) {
 
 }  // namespace
 
-PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm comm)
+PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicator)
     : mesh(*problem.mesh),
       element_degree(degree),
+      comm(communicator),
       fe(dealii::FE_SimplexP<2>(degree), 3),
       mapping(dealii::FE_SimplexP<2>(1)),
       quadrature(gauss_points_1d(degree)) {
@@ -170,15 +171,8 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
                                         const std::vector<Mat2>& to_grain_gradient) {
   dealii::FEValues<2> fe_values(mapping, fe, quadrature,
                                 dealii::update_gradients | dealii::update_JxW_values);
-  const unsigned int n_cells = dof_handler.get_triangulation().n_active_cells();
   const unsigned int n_local = fe.n_dofs_per_cell();
   const unsigned int n_nodes_per_cell = n_local / 3;
-  cell_dofs.assign(n_cells, std::vector<GlobalDof>(n_local));
-  cell_JxW_m2.assign(n_cells, {});
-  cell_grad_grain.assign(n_cells, {});
-  cell_node_rest_area_m2.assign(n_cells, {});
-  cell_owned.assign(n_cells, 0);
-  cell_grain_area_ratio.assign(n_cells, 1.0);
   // Linear hats: the barycentric coordinates of the point on the reference triangle.
   hat_values.clear();
   shape_values.clear();
@@ -189,41 +183,54 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
     for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
       shape_values[q][a] = fe.base_element(0).shape_value(a, p);
   }
+  // DoF -> the node it carries or follows; a cell adds to the rows of its own DoFs and, for a
+  // seam copy, to those of the copy that carries the node (fem_constraints.h).
+  std::vector<int> dof_node(n_dofs(), -1);
+  for (int node = 0; node < n_nodes(); ++node)
+    for (const DofTriple& d : node_copies[node])
+      for (const GlobalDof i : d) dof_node[i] = node;
+  const auto adds_to_owned_row = [&](const std::vector<GlobalDof>& dofs) {
+    for (const GlobalDof i : dofs)
+      for (const GlobalDof row : {i, node_copies[dof_node[i]].front()[0]})
+        if (owned_dofs.is_element(row)) return true;
+    return false;
+  };
+  node_rest_area_m2_.assign(n_nodes(), 0.0);
+  std::vector<GlobalDof> dofs(n_local);
+  std::vector<double> node_area_m2(n_nodes_per_cell);
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     const unsigned int c = cell->active_cell_index();
     fe_values.reinit(cell);
-    cell->get_dof_indices(cell_dofs[c]);
-    cell_owned[c] = cell->is_locally_owned();
+    cell->get_dof_indices(dofs);
     const Mat2& G = to_grain_gradient[c];
     // grad_grain = G grad_layout with G = J^-T: grain area / layout area = |det J| = 1/|det G|.
-    cell_grain_area_ratio[c] = 1.0 / std::abs(G.determinant());
-    cell_grad_grain[c].resize(quadrature.size() * n_nodes_per_cell);
-    cell_node_rest_area_m2[c].assign(n_nodes_per_cell, 0.0);
-    for (unsigned int q = 0; q < quadrature.size(); ++q) {
-      cell_JxW_m2[c].push_back(fe_values.JxW(q));
+    const double grain_area_ratio = 1.0 / std::abs(G.determinant());
+    std::fill(node_area_m2.begin(), node_area_m2.end(), 0.0);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
       for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
-        cell_node_rest_area_m2[c][a] +=
-            shape_values[q][a] * fe_values.JxW(q) * cell_grain_area_ratio[c];
+        node_area_m2[a] += shape_values[q][a] * fe_values.JxW(q) * grain_area_ratio;
+    for (unsigned int i = 0; i < n_local; ++i)
+      if (local_component[i] == 0)
+        node_rest_area_m2_[dof_node[dofs[i]]] += node_area_m2[local_node[i]];
+    if (!cell->is_locally_owned() && !adds_to_owned_row(dofs)) continue;
+
+    cell_index.push_back(static_cast<int>(c));
+    cell_dofs.push_back(dofs);
+    cell_owned.push_back(cell->is_locally_owned());
+    cell_grain_area_ratio.push_back(grain_area_ratio);
+    cell_node_rest_area_m2.push_back(node_area_m2);
+    std::vector<double>& JxW = cell_JxW_m2.emplace_back();
+    std::vector<Vec2>& grad_grain =
+        cell_grad_grain.emplace_back(quadrature.size() * n_nodes_per_cell);
+    for (unsigned int q = 0; q < quadrature.size(); ++q) {
+      JxW.push_back(fe_values.JxW(q));
       for (unsigned int i = 0; i < n_local; ++i) {
         if (local_component[i] != 0) continue;
         const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
-        cell_grad_grain[c][q * n_nodes_per_cell + local_node[i]] = G * Vec2(g[0], g[1]);
+        grad_grain[q * n_nodes_per_cell + local_node[i]] = G * Vec2(g[0], g[1]);
       }
     }
   }
-}
-
-std::vector<double> PatternMesh::node_rest_area_m2() const {
-  // DoF -> the node it carries or follows.
-  std::vector<int> dof_node(n_dofs(), -1);
-  for (int node = 0; node < n_nodes(); ++node)
-    for (const DofTriple& d : node_copies[node]) dof_node[d[0]] = node;
-  std::vector<double> area(n_nodes(), 0.0);
-  for (int c = 0; c < n_cells(); ++c)
-    for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
-      if (local_component[i] == 0)
-        area[dof_node[cell_dofs[c][i]]] += cell_node_rest_area_m2[c][local_node[i]];
-  return area;
 }
 
 Vec3 PatternMesh::vertex_position(const dealii::Vector<double>& x, int unwelded) const {

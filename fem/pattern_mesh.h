@@ -37,12 +37,14 @@ class PatternMesh {
  public:
   // Distributes the cells over `comm`; throws std::invalid_argument for a degree other than
   // 1 or 2.
-  PatternMesh(const Problem& problem, int element_degree, MPI_Comm comm);
+  PatternMesh(const Problem& problem, int element_degree, MPI_Comm communicator);
 
   GlobalDof n_dofs() const { return owned_dofs.size(); }
   int n_nodes() const { return static_cast<int>(node_copies.size()); }
   int n_vertices() const { return mesh.n_vertices; }
+  // The cells this rank stores (see cell_dofs), and the cells of all ranks.
   int n_cells() const { return static_cast<int>(cell_dofs.size()); }
+  int n_all_cells() const { return static_cast<int>(cell_vertices.size()); }
   int n_local_dofs() const { return static_cast<int>(fe.n_dofs_per_cell()); }
   int n_element_nodes() const { return n_local_dofs() / 3; }
   // Node-major index 3 a + c of a cell's local DoF i (node a, component c).
@@ -59,6 +61,7 @@ class PatternMesh {
 
   const SimulationMesh& mesh;
   int element_degree;
+  MPI_Comm comm;
   dealii::FESystem<2> fe;
   dealii::MappingFE<2> mapping;
   dealii::QGaussSimplex<2> quadrature;
@@ -72,15 +75,20 @@ class PatternMesh {
   std::vector<int> master;             // welded vertex -> the unwelded copy that carries it
   // Per node, the DoFs of each copy; the first carries it.
   std::vector<std::vector<DofTriple>> node_copies;
-  std::vector<std::array<int, 2>> edge_ends;      // welded edge -> its two welded vertices
-  std::map<std::array<int, 2>, int> edge_index;   // sorted welded vertex pair -> welded edge
-  ConstrainedDirections node_constrained;         // the Problem's constraints at every node
-  std::vector<std::array<int, 3>> cell_vertices;  // per cell, its corners' welded vertices
+  std::vector<std::array<int, 2>> edge_ends;     // welded edge -> its two welded vertices
+  std::map<std::array<int, 2>, int> edge_index;  // sorted welded vertex pair -> welded edge
+  ConstrainedDirections node_constrained;        // the Problem's constraints at every node
+  // Per cell of all ranks (by active_cell_index), its corners' welded vertices.
+  std::vector<std::array<int, 3>> cell_vertices;
 
-  // Per active cell (by active_cell_index): its DoFs, whether this rank owns it, and per
-  // quadrature point its JxW (layout area, m^2) and each element node's shape gradient in
-  // grain axes (1/m), node-major [q * n_element_nodes + a]. They live on the reference
-  // (pattern) configuration, so they are computed once.
+  // Per stored cell k: the cells this rank owns and those of other ranks that add to a row
+  // it owns (across the partition's boundary, or through a seam to the copy that carries the
+  // node), which the matrix's sparsity needs; on one rank, every cell. cell_index[k] is the
+  // cell's active_cell_index. Then its DoFs, whether this rank owns it, and per quadrature
+  // point its JxW (layout area, m^2) and each element node's shape gradient in grain axes
+  // (1/m), node-major [q * n_element_nodes + a]. They live on the reference (pattern)
+  // configuration, so they are computed once.
+  std::vector<int> cell_index;
   std::vector<std::vector<GlobalDof>> cell_dofs;
   std::vector<char> cell_owned;
   std::vector<std::vector<double>> cell_JxW_m2;
@@ -97,8 +105,8 @@ class PatternMesh {
   // consistent share of the cell's area (sums to the cell's rest area), which carries the
   // fabric's weight.
   std::vector<std::vector<double>> cell_node_rest_area_m2;
-  // The same summed over each node's cells (a seam node's copies together), m^2.
-  std::vector<double> node_rest_area_m2() const;
+  // The same summed over each node's cells of all ranks (a seam node's copies together), m^2.
+  const std::vector<double>& node_rest_area_m2() const { return node_rest_area_m2_; }
 
   // Mean rest edge length over the triangles' edges (an interior edge counted twice), m.
   double mean_edge_m = 0.0;
@@ -107,6 +115,8 @@ class PatternMesh {
   std::vector<double> node_edge_m;
 
  private:
+  std::vector<double> node_rest_area_m2_;
+
   using Triangulation = dealii::parallel::shared::Triangulation<2>;
   // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.
   std::vector<Mat2> build_triangulation(Triangulation& triangulation) const;
