@@ -1,5 +1,8 @@
 #include "body_mesh_files.h"
 
+#include "contact/body_mesh_error.h"
+#include "contact/mesh_body.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -87,6 +90,15 @@ void write_ply(const std::string& path, const PolygonMesh& mesh) {
 
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
+}
+
+std::string mesh_refusal(const std::string& path) {
+  try {
+    load_mesh_body(path, {});
+  } catch (const BodyMeshError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace tightfit::testing

@@ -27,4 +27,8 @@ void write_ply(const std::string& path, const PolygonMesh& mesh);  // ASCII
 // Writes `text` as it stands (broken files).
 void write_text(const std::string& path, const std::string& text);
 
+// What load_mesh_body says when it refuses the file at `path` (its BodyMeshError), or an empty
+// string when it reads the file.
+std::string mesh_refusal(const std::string& path);
+
 }  // namespace tightfit::testing

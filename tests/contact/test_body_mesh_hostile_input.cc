@@ -20,15 +20,6 @@ namespace {
 
 using namespace tightfit::testing;
 
-std::string refusal(const std::string& path) {
-  try {
-    load_mesh_body(path, {});
-  } catch (const BodyMeshError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 void write_bytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary)
       .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -53,7 +44,7 @@ TEST(BodyMeshHostileInput, BinaryStlAnnouncingMoreFacetsThanItHolds) {
   for (const std::string header : {"binary exported by hand", "solid but binary all the same"}) {
     const std::string path = temporary_path("bogus_count.stl");
     write_bytes(path, binary_stl(header, 4000000000u));
-    const std::string message = refusal(path);
+    const std::string message = mesh_refusal(path);
     EXPECT_NE(message.find("truncated binary STL"), std::string::npos) << header << ": " << message;
     EXPECT_NE(message.find("4000000000 facets"), std::string::npos) << message;
   }
@@ -67,7 +58,7 @@ TEST(BodyMeshHostileInput, PlyAnnouncingABillionFaces) {
              "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
              "property float y\nproperty float z\nelement face 1000000000\n"
              "property list uchar int vertex_indices\nend_header\n");
-  const std::string message = refusal(path);
+  const std::string message = mesh_refusal(path);
   EXPECT_NE(message.find("would need about"), std::string::npos) << message;
   EXPECT_NE(message.find("1e+09 faces announced"), std::string::npos) << message;
 }
@@ -78,8 +69,8 @@ TEST(BodyMeshHostileInput, PlyWithANegativeCount) {
              "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nproperty float y\n"
              "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
              "end_header\n3 0 1 2\n");
-  EXPECT_NE(refusal(path).find("line 3: a negative element count"), std::string::npos)
-      << refusal(path);
+  EXPECT_NE(mesh_refusal(path).find("line 3: a negative element count"), std::string::npos)
+      << mesh_refusal(path);
 }
 
 // Every input kept from fuzzing is refused with a message naming the file.
@@ -92,7 +83,7 @@ TEST(BodyMeshHostileInput, FuzzFindingsAreRefused) {
     const std::string path = temporary_path("finding_" + name);
     std::filesystem::copy_file(entry.path(), path,
                                std::filesystem::copy_options::overwrite_existing);
-    const std::string message = refusal(path);
+    const std::string message = mesh_refusal(path);
     EXPECT_NE(message.find(path), std::string::npos)
         << name << " was accepted or crashed: " << message;
     std::printf("%s: %s\n", name.c_str(), message.c_str());

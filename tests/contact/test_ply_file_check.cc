@@ -22,17 +22,8 @@ namespace {
 
 using namespace tightfit::testing;
 
-std::string refusal(const std::string& path) {
-  try {
-    load_mesh_body(path, {});
-  } catch (const BodyMeshError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
-
 void expect_refusal_names(const std::string& path, const std::vector<std::string>& words) {
-  const std::string message = refusal(path);
+  const std::string message = mesh_refusal(path);
   EXPECT_NE(message.find("'" + path + "'"), std::string::npos) << message;
   for (const std::string& w : words) EXPECT_NE(message.find(w), std::string::npos) << message;
 }

@@ -2,6 +2,7 @@
 // field"): stress and tangent against finite differences of its energy in every regime, the
 // law unchanged where taut, and the closed forms of a strip pulled with slack across it.
 #include "core/material.h"
+#include "tests/core/stress_difference.h"
 
 #include <gtest/gtest.h>
 
@@ -67,13 +68,7 @@ TEST_F(TensionField, TangentIsTheStressDerivative) {
     const Mat3 D = law->tangent(state.C);
     const double h = 1e-6;
     for (int j = 0; j < 3; ++j) {
-      // Voigt column j: a unit dE in (E11, E22, 2 E12), so dC = 2 dE.
-      Mat2 dC = Mat2::Zero();
-      if (j < 2)
-        dC(j, j) = 2.0 * h;
-      else
-        dC(0, 1) = dC(1, 0) = h;
-      const Mat2 dS = (law->stress(state.C + dC) - law->stress(state.C - dC)) / (2.0 * h);
+      const Mat2 dS = testing::stress_derivative_along(*law, state.C, j, h);
       EXPECT_NEAR(D(0, j), dS(0, 0), 1e-6 * law->stiffness_scale()) << state.regime << j;
       EXPECT_NEAR(D(1, j), dS(1, 1), 1e-6 * law->stiffness_scale()) << state.regime << j;
       EXPECT_NEAR(D(2, j), dS(0, 1), 1e-6 * law->stiffness_scale()) << state.regime << j;
