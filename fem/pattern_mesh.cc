@@ -4,6 +4,7 @@
 #include "fem/freed_memory.h"
 #include "fem/panel_triangles.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/reference_cell.h>
@@ -66,6 +67,8 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
     for (const DofTriple& d : copies)
       dofs_in_node_blocks =
           dofs_in_node_blocks && d[0] % 3 == 0 && d[1] == d[0] + 1 && d[2] == d[0] + 2;
+  // On every rank alike: the coordinates' vector and the matrix's block size are collective.
+  dofs_in_node_blocks = dealii::Utilities::MPI::min(dofs_in_node_blocks ? 1 : 0, comm) == 1;
   release_freed_memory();
   node_constrained = ConstrainedDirections(problem.constraints, mesh.n_vertices);
   // An edge midpoint is constrained along what both its ends are.

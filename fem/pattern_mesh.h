@@ -69,7 +69,7 @@ class PatternMesh {
   // number of DoFs of all ranks.
   dealii::IndexSet owned_dofs;
   // Whether every node's DoF triple is three consecutive rows starting at a multiple of 3, and
-  // this rank's DoFs whole triples (deal.II numbers a node's components together): the
+  // every rank's DoFs whole triples (deal.II numbers a node's components together): the
   // matrix then has blocks of 3, one node each, as GAMG's rigid motions need.
   bool dofs_in_node_blocks = false;
   // Local DoF i of a cell is component local_component[i] of element node local_node[i].
