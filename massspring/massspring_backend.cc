@@ -7,6 +7,7 @@
 #include "massspring/flat_panel_start.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/residual_history.h"
+#include "massspring/residual_location.h"
 #include "massspring/stable_time_step.h"
 
 #include <algorithm>
@@ -279,7 +280,11 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     message << "mass spring: " << step_name(step) << " " << what << " at frame " << frame
             << " (residual " << residual << " N, tolerance " << tolerance_N_ << " N, time step "
             << time_step_s_ << " s)";
-    if (with_history) message << "; " << history.text();
+    if (with_history) {
+      // Where the residual sits and whether the garment as a whole is still pushed (a slide).
+      residual_forces(x_, step.gravity_on, force_);
+      message << "; " << text(locate_residual(x_, force_, problem_.body)) << "; " << history.text();
+    }
     return SolverError(message.str());
   };
 

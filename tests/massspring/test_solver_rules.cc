@@ -199,6 +199,10 @@ TEST(MassSpringSolver, StallEndsTheStepEarlyWithTheResidualHistory) {
   EXPECT_NE(message.find("stalled"), std::string::npos) << message;
   EXPECT_NE(message.find("after 1 time step halvings"), std::string::npos) << message;
   EXPECT_NE(message.find("residual history"), std::string::npos) << message;
+  // Where the residual sits: a vertex, its parts along and across the body's normal, and the
+  // net force on the garment.
+  EXPECT_NE(message.find("largest residual"), std::string::npos) << message;
+  EXPECT_NE(message.find("net force on the garment"), std::string::npos) << message;
   // The frame it stopped at, far below the default Maximum frames (200000).
   const std::size_t at = message.find(" at frame ");
   ASSERT_NE(at, std::string::npos) << message;
