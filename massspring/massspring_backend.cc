@@ -156,8 +156,9 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     largest_squared = std::max(largest_squared, squared);
     total_squared += squared;  // std::max drops NaN; a sum keeps it
   }
-  return std::isfinite(total_squared) ? std::sqrt(largest_squared)
-                                      : std::numeric_limits<double>::quiet_NaN();
+  if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
+  return parameters_.stop_norm == StopNorm::rms ? std::sqrt(total_squared / double(n))
+                                                : std::sqrt(largest_squared);
 }
 
 void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) const {
@@ -405,9 +406,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
            << " quasi-static, " << updates << " contact multiplier updates, " << halvings
            << " time step halvings), dt " << time_step_s_ << " s, damping " << damping_per_s_
            << " 1/s, residual " << residual << " N < ";
-  detail << tolerance_N_ << " N, largest penetration " << penetration_m << " m, "
-         << report.wall_seconds << " s (" << double(std::clock() - cpu_start) / CLOCKS_PER_SEC
-         << " s CPU)";
+  detail << tolerance_N_ << " N" << (parameters_.stop_norm == StopNorm::rms ? " (rms)" : "")
+         << ", largest penetration " << penetration_m << " m, " << report.wall_seconds << " s ("
+         << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
   if (halvings > 0) detail << "; " << history.text();
   report.detail = detail.str();
   return report;
