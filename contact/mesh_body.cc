@@ -36,7 +36,8 @@ MeshBody::MeshBody(TriangleSurface surface, const MeshBodyOptions& options, cons
     : surface_(std::move(surface)),
       what_(what),
       open_(options.import.allow_open_surface),
-      skin_offset_m_(options.skin_offset_m) {
+      skin_offset_m_(options.skin_offset_m),
+      contact_surface_(options.contact_surface) {
   if (!(skin_offset_m_ >= 0))
     throw std::invalid_argument("Body/Skin offset: must not be negative (m)");
   if (surface_.source_face.size() != surface_.triangles.size()) {
@@ -89,6 +90,8 @@ void MeshBody::update_geometry() {
   for (Vec3& n : vertex_normals_)
     if (n.norm() > 0) n.normalize();
   bvh_.build(v, surface_.triangles);
+  if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth)
+    field_.build(v, surface_.triangles, vertex_normals_);
 }
 
 Vec3 MeshBody::interpolated_normal(int triangle, const Vec3& b, double* length) const {
@@ -102,6 +105,19 @@ Vec3 MeshBody::interpolated_normal(int triangle, const Vec3& b, double* length) 
 }
 
 SurfacePoint MeshBody::query(const Vec3& x) const {
+  SurfacePoint s = faceted_query(x);
+  if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth) {
+    smooth_query(x, s);  // the closest point on the skin's level set
+    s.location = smooth_location(s.closest_point_m, s.location.face);
+  } else {
+    // The skin: the surface moved out along the normal.
+    s.closest_point_m += skin_offset_m_ * s.outward_normal;
+  }
+  s.signed_distance_m -= skin_offset_m_;
+  return s;
+}
+
+SurfacePoint MeshBody::faceted_query(const Vec3& x) const {
   const TriangleBvh::Hit hit = bvh_.closest(x);
   const int t = hit.triangle;
   const Triangle& tri = surface_.triangles[t];
@@ -165,9 +181,7 @@ SurfacePoint MeshBody::query(const Vec3& x) const {
         (Mat3::Identity() - s.outward_normal * s.outward_normal.transpose()) * dN_dx / length;
   s.location.face = t;
   s.location.coordinates = b;
-  // The skin: the same foot, the surface moved out along the smooth normal.
-  s.signed_distance_m -= skin_offset_m_;
-  s.closest_point_m = foot + skin_offset_m_ * s.outward_normal;
+  s.closest_point_m = foot;
   return s;
 }
 
@@ -175,8 +189,23 @@ Vec3 MeshBody::surface_point_m(const SurfaceLocation& location) const {
   const Triangle& tri = surface_.triangles.at(location.face);
   const Vec3& b = location.coordinates;
   const auto& v = surface_.vertices_m;
-  return b[0] * v[tri[0]] + b[1] * v[tri[1]] + b[2] * v[tri[2]] +
-         skin_offset_m_ * interpolated_normal(location.face, b);
+  const Vec3 flat = b[0] * v[tri[0]] + b[1] * v[tri[1]] + b[2] * v[tri[2]];
+  const Vec3 normal = interpolated_normal(location.face, b);
+  if (contact_surface_ == MeshBodyOptions::ContactSurface::faceted)
+    return flat + skin_offset_m_ * normal;
+  // Out along the interpolated normal to where the smooth gap is the skin's: the inverse of
+  // smooth_location, by Newton's method on g(flat + t N) - skin (dg/dt = grad g . N).
+  double t = 0.0;
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    SurfacePoint s = faceted_query(flat + t * normal);
+    smooth_field(flat + t * normal, s);
+    const double residual = s.signed_distance_m - skin_offset_m_;
+    const double slope = s.gap_gradient.dot(normal);
+    if (!(slope > 0.1)) break;  // the normal field runs nearly along the surface: stop there
+    t -= residual / slope;
+    if (std::abs(residual) < 1e-13) break;
+  }
+  return flat + t * normal;
 }
 
 DisplayMesh MeshBody::display_mesh() const {

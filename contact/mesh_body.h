@@ -3,6 +3,7 @@
 // field over the surface (docs/bodies.md "Mesh bodies").
 #pragma once
 
+#include "contact/blended_quadric_field.h"
 #include "contact/mesh_import.h"
 #include "contact/rigid_body.h"
 #include "contact/triangle_bvh.h"
@@ -19,6 +20,13 @@ struct MeshBodyOptions {
   // The contact surface lies this far outside the mesh, along its normal (skin, padding or an
   // undergarment), m; >= 0.
   double skin_offset_m = 0.0;
+  // The surface the garment touches (docs/bodies.md "The smooth contact surface"):
+  // `faceted`, the flat faces' distance with the force along the interpolated vertex normals;
+  // `smooth`, the blended osculating quadrics' signed-distance field (blended_quadric_field.h),
+  // a C2 field whose gradient is the contact normal, so that the contact force derives from an
+  // energy and Newton's tangent is its symmetric Hessian.
+  enum class ContactSurface { faceted, smooth };
+  ContactSurface contact_surface = ContactSurface::faceted;
 };
 
 class MeshBody final : public RigidBody {
@@ -52,11 +60,27 @@ class MeshBody final : public RigidBody {
  private:
   void update_geometry();
   Vec3 interpolated_normal(int triangle, const Vec3& barycentric, double* length = nullptr) const;
+  SurfacePoint faceted_query(const Vec3& x) const;
+  // Replaces the faceted answer's distance, normal and derivatives by the smooth field's where
+  // the field covers x (blended back to the faceted ones as its weights fade, far off the
+  // surface), with the closest point on the smooth surface moved out by the skin (the level
+  // set g = skin offset); the distance is returned before the skin is taken off.
+  void smooth_query(const Vec3& x, SurfacePoint& s) const;
+  // smooth_query's distance, normal and derivatives alone, with the closest point one Newton
+  // step x - g n onto the surface.
+  void smooth_field(const Vec3& x, SurfacePoint& s) const;
+  // The face and barycentric coordinates b of the point y = c(b) + t N(b), c the flat point
+  // and N = sum b_i n_i the interpolated vertex normal: the flat surface's coordinates carried
+  // out to the smooth one along the normal field, a map that is continuous across edges
+  // (docs/bodies.md). `face` starts the walk.
+  SurfaceLocation smooth_location(const Vec3& y, int face) const;
 
   TriangleSurface surface_;
   std::string what_;
   bool open_;
   double skin_offset_m_;
+  MeshBodyOptions::ContactSurface contact_surface_;
+  BlendedQuadricField field_;
   std::vector<Vec3> face_normals_;
   std::vector<Vec3> vertex_normals_;
   std::vector<std::array<int, 3>> neighbours_;  // across edge k (corners k, k+1); -1 on a border

@@ -46,6 +46,12 @@ void declare_mesh_body_settings(ParameterTree& prm) {
   prm.declare_double("Skin offset", 0.0, 0, 1,
                      "The contact surface lies this far outside the mesh along its normal "
                      "(padding, an undergarment) (m).");
+  prm.declare_selection(
+      "Contact surface", "faceted", "smooth|faceted",
+      "The surface the garment touches: smooth, the signed distance to blended osculating "
+      "quadrics at the vertices (a C2 field whose gradient is the contact normal, so the "
+      "contact force derives from an energy); faceted, the distance to the flat faces with the "
+      "force along the interpolated vertex normals (docs/bodies.md).");
 }
 
 MeshBodySettings parse_mesh_body_settings(ParameterTree& prm) {
@@ -60,6 +66,9 @@ MeshBodySettings parse_mesh_body_settings(ParameterTree& prm) {
   s.options.import.translation_m = prm.get_vector("Translation");
   s.options.import.allow_open_surface = prm.get_bool("Accept open surface");
   s.options.skin_offset_m = prm.get_double("Skin offset");
+  s.options.contact_surface = prm.get("Contact surface") == "faceted"
+                                  ? MeshBodyOptions::ContactSurface::faceted
+                                  : MeshBodyOptions::ContactSurface::smooth;
   return s;
 }
 

@@ -1,0 +1,67 @@
+// A smooth signed-distance field over a triangle mesh body: each vertex i carries the quadric
+// that osculates the surface there,
+//   d_i(x) = n_i . (x - p_i) + (x - p_i)^T K_i (x - p_i) / 2
+// (n_i the vertex's unit normal, K_i its curvature tensor fitted to its one-ring, positive where
+// the body is convex), which is the signed distance to the surface up to third order in
+// |x - p_i|, and the field blends them with compactly supported weights,
+//   phi(x) = sum w_i(x) d_i(x) / sum w_i(x),   w_i = psi(|x - p_i| / s_i),
+// psi(r) = (1 - r)^4 (4 r + 1) Wendland's C2 kernel (Wendland, "Piecewise polynomial, positive
+// definite and compactly supported radial functions of minimal degree", Adv. Comput. Math. 4,
+// 1995), s_i a multiple of the longest edge at vertex i. This is the moving-least-squares
+// implicit surface of Shen, O'Brien and Shewchuk ("Interpolating and approximating implicit
+// surfaces from polygon soup", SIGGRAPH 2004) with the planes raised to osculating quadrics, so
+// its zero set passes within third order of the vertices' smooth surface rather than bulging
+// out to the tangent planes. phi is C2 in x: its gradient and Hessian are exact (below), and a
+// force along the gradient derives from an energy (docs/bodies.md "The smooth contact surface").
+#pragma once
+
+#include "core/types.h"
+
+#include <vector>
+
+namespace tightfit {
+
+class BlendedQuadricField {
+ public:
+  // The support radius s_i over the longest edge at vertex i: large enough that every point
+  // of a triangle lies within 0.39 s_i of a corner (W >= 0.35 on the flat surface), small
+  // enough that few quadrics reach a quarter turn round a limb, where their third-order error
+  // grows.
+  static constexpr double support_over_longest_edge = 1.5;
+  // Jacobi sweeps that make the field vanish at the vertices (below).
+  static constexpr int interpolation_sweeps = 30;
+
+  // Fits each vertex's curvature tensor to the positions of its edge neighbours (least squares
+  // for n_i . e_j = -e_j^T K_i e_j / 2 over the edges e_j from p_i, K_i in the tangent plane),
+  // then shifts each quadric by a constant c_i so that the field vanishes at every vertex (the
+  // blend of curved quadrics is not interpolating by itself: on a coarse limb, nine vertices
+  // round an ankle, it passed 1.7 mm outside them). The shifts solve sum_i w_i(p_j) (d_i(p_j)
+  // + c_i) = 0 by Jacobi sweeps c_j <- c_j - phi(p_j): the Wendland kernel matrix is positive
+  // definite, so the sweeps converge, fastest for the smooth part of the misfit.
+  void build(const std::vector<Vec3>& vertices_m, const std::vector<Triangle>& triangles,
+             const std::vector<Vec3>& vertex_normals);
+
+  struct Value {
+    double weight_sum = 0.0;  // W = sum w_i: 0 where no vertex's support reaches x
+    Vec3 weight_gradient_per_m = Vec3::Zero();
+    double phi_m = 0.0;
+    Vec3 gradient = Vec3::Zero();       // d phi / dx
+    Mat3 hessian_per_m = Mat3::Zero();  // d2 phi / dx2, symmetric
+  };
+  // The field at x. The vertices that add to it are gathered from `seed` (the corners of the
+  // flat surface's closest triangle) over the mesh's edges, through vertices whose support
+  // holds x: the blend stays geodesically local, so a thigh never feels the other thigh.
+  Value evaluate(const Vec3& x_m, const Triangle& seed) const;
+
+  // K_i, 1/m (symmetric, zero along n_i).
+  const Mat3& curvature(int vertex) const { return curvature_[vertex]; }
+
+ private:
+  std::vector<Vec3> p_, n_;
+  std::vector<Mat3> curvature_;
+  std::vector<double> shift_m_;  // c_i
+  std::vector<double> support_m_;
+  std::vector<int> neighbour_start_, neighbours_;  // the edge neighbours of vertex i (CSR)
+};
+
+}  // namespace tightfit
