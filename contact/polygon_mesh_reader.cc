@@ -2,11 +2,9 @@
 #include "contact/body_mesh_error.h"
 #include "contact/ply_file_check.h"
 #include "contact/polygon_mesh.h"
+#include "contact/vtk_reader_run.h"
 
-#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
-#include <vtkCommand.h>
-#include <vtkExecutive.h>
 #include <vtkIdList.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
@@ -37,25 +35,6 @@ std::string lower_extension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   return ext;
-}
-
-// Collects what a reader reports through vtkErrorMacro/vtkWarningMacro instead of letting VTK
-// print it, keeping the words of each report: VTK prefixes them with "ERROR: In file, line n"
-// and "vtkClass (address): ".
-void collect_message(vtkObject*, unsigned long, void* client_data, void* call_data) {
-  auto* messages = static_cast<std::string*>(client_data);
-  if (!call_data) return;
-  std::istringstream lines(static_cast<const char*>(call_data));
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.rfind("ERROR: In", 0) == 0 || line.rfind("Warning: In", 0) == 0) continue;
-    const auto address_end = line.find("): ");
-    if (line.rfind("vtk", 0) == 0 && address_end != std::string::npos)
-      line = line.substr(address_end + 3);
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    *messages += (messages->empty() ? "" : "; ") + line;
-    break;  // the first line says what; the rest is VTK's pipeline detail
-  }
 }
 
 vtkSmartPointer<vtkPolyDataAlgorithm> reader_for(const std::string& path, const std::string& ext) {
@@ -185,24 +164,9 @@ PolygonMesh read_polygon_mesh(const std::string& path) {
   if (ext == "obj") check_obj_lines(path);
   if (ext == "ply") check_ply_file(path);
   if (ext == "stl") check_stl_size(path);
-  // The reader's own reports say what is wrong; the pipeline's only that the reader failed.
-  std::string messages, pipeline_messages;
-  auto observer = vtkSmartPointer<vtkCallbackCommand>::New();
-  observer->SetCallback(collect_message);
-  observer->SetClientData(&messages);
-  reader->AddObserver(vtkCommand::ErrorEvent, observer);
-  reader->AddObserver(vtkCommand::WarningEvent, observer);
-  auto pipeline_observer = vtkSmartPointer<vtkCallbackCommand>::New();
-  pipeline_observer->SetCallback(collect_message);
-  pipeline_observer->SetClientData(&pipeline_messages);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipeline_observer);
-  reader->Update();
-  if (messages.empty()) messages = pipeline_messages;
-  if (!messages.empty() || reader->GetErrorCode() != 0)
-    throw BodyMeshError("body mesh '" + path + "': the " + ext + " reader failed: " +
-                        (messages.empty()
-                             ? std::string("error code ") + std::to_string(reader->GetErrorCode())
-                             : messages));
+  const std::string messages = update_reader_quietly(*reader);
+  if (!messages.empty())
+    throw BodyMeshError("body mesh '" + path + "': the " + ext + " reader failed: " + messages);
   vtkPolyData* data = reader->GetOutput();
   PolygonMesh mesh;
   const vtkIdType n_points = data->GetNumberOfPoints();

@@ -46,10 +46,11 @@ const Problem& checked(const Problem& problem, const FemParameters& parameters) 
     throw std::invalid_argument("fem backend: the problem needs a mesh, a law and a body");
   if (problem.friction_coefficient > 0.0) {
     // Friction's tangent is unsymmetric (contact/coulomb_friction.h): CG cannot take it.
-    if (parameters.linear_solver == LinearSolverKind::cg_amg)
+    if (uses_cg(parameters.linear_solver))
       throw std::invalid_argument(
-          "Finite elements/Linear solver = cg-amg: Contact/Friction coefficient > 0 makes the "
-          "tangent unsymmetric; use direct (MUMPS LU) or gmres-amg");
+          "Finite elements/Linear solver = " + std::string(to_string(parameters.linear_solver)) +
+          ": Contact/Friction coefficient > 0 makes the tangent unsymmetric; use direct (MUMPS "
+          "LU), gmres-amg or gmres-gamg");
     if (parameters.element_degree != 1)
       throw std::invalid_argument(
           "Finite elements/Element degree = " + std::to_string(parameters.element_degree) +
@@ -89,7 +90,7 @@ class FemBackend::Implementation {
         parameters_(parameters),
         pattern_(problem_, parameters.element_degree, comm_),
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
-        assembly_(pattern_, problem_, parameters.linear_solver == LinearSolverKind::cg_amg, comm_),
+        assembly_(pattern_, problem_, uses_cg(parameters.linear_solver), comm_),
         newton_(pattern_, parameters, problem.law->stiffness_scale() * pattern_.mean_edge_m,
                 problem.law->stiffness_scale(), comm_),
         contact_(pattern_, problem_, parameters) {

@@ -18,8 +18,20 @@ const char* to_string(LinearSolverKind kind) {
       return "cg-amg";
     case LinearSolverKind::gmres_amg:
       return "gmres-amg";
+    case LinearSolverKind::cg_gamg:
+      return "cg-gamg";
+    case LinearSolverKind::gmres_gamg:
+      return "gmres-gamg";
   }
   return "unknown";
+}
+
+bool uses_cg(LinearSolverKind kind) {
+  return kind == LinearSolverKind::cg_amg || kind == LinearSolverKind::cg_gamg;
+}
+
+bool uses_gamg(LinearSolverKind kind) {
+  return kind == LinearSolverKind::cg_gamg || kind == LinearSolverKind::gmres_gamg;
 }
 
 const char* to_string(SlackTreatment treatment) {
@@ -47,13 +59,16 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "with contact there too; the output stays per vertex, each vertex reading "
                     "the contact traction recovered on the curved surface.");
   prm.declare_entry("Linear solver", to_string(d.linear_solver),
-                    Selection("direct|cg-amg|gmres-amg"),
+                    Selection("direct|cg-amg|gmres-amg|cg-gamg|gmres-gamg"),
                     "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (its "
                     "symbolic analysis is reused while the pattern holds; the fastest at every "
                     "size measured, up to 96600 vertices); 'cg-amg' is conjugate gradients "
-                    "preconditioned by BoomerAMG; 'gmres-amg' is GMRES with BoomerAMG. When CG "
-                    "meets an indefinite tangent it switches to GMRES, and GMRES to MUMPS, noted "
-                    "in the step's log line. PETSc options with the prefix fem_ tune every one "
+                    "preconditioned by BoomerAMG; 'gmres-amg' is GMRES with BoomerAMG; 'cg-gamg' "
+                    "and 'gmres-gamg' the same with PETSc's smoothed aggregation (GAMG), each "
+                    "node's three displacements one block and the six rigid motions of the "
+                    "current positions its near null space. When CG meets an indefinite tangent "
+                    "it switches to GMRES, and GMRES to MUMPS, noted in the step's log line. PETSc "
+                    "options with the prefix fem_ tune every one "
                     "of them (-fem_pc_type, -fem_mat_mumps_icntl_14, ...).");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
                     "Krylov solvers stop when the residual falls below eta times the right-hand "
@@ -126,6 +141,10 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
     linear_solver = LinearSolverKind::cg_amg;
   else if (solver == "gmres-amg")
     linear_solver = LinearSolverKind::gmres_amg;
+  else if (solver == "cg-gamg")
+    linear_solver = LinearSolverKind::cg_gamg;
+  else if (solver == "gmres-gamg")
+    linear_solver = LinearSolverKind::gmres_gamg;
   else
     throw std::invalid_argument("Finite elements/Linear solver: unknown solver '" + solver + "'");
   linear_tolerance = prm.get_double("Linear solver tolerance");

@@ -13,7 +13,16 @@ enum class LinearSolverKind {
   direct,     // PETSc's MUMPS sparse LU: small problems, exact solves
   cg_amg,     // conjugate gradients with BoomerAMG: large problems (the tangent is symmetric)
   gmres_amg,  // GMRES with BoomerAMG: when the tangent is not positive definite
+  // The same Krylov methods with PETSc's smoothed-aggregation multigrid (GAMG), the nodes'
+  // three displacements one block and the six rigid motions of the current positions its
+  // near null space (petsc_linear_solver.h).
+  cg_gamg,
+  gmres_gamg,
 };
+
+// Conjugate gradients (a symmetric tangent needed), and PETSc's GAMG as preconditioner.
+bool uses_cg(LinearSolverKind kind);
+bool uses_gamg(LinearSolverKind kind);
 
 // How the membrane treats slack (docs/model.md, "Slack: the tension field").
 enum class SlackTreatment {

@@ -50,10 +50,20 @@ void NewtonSolver::fail(const LoadStep& step, const std::string& what, double re
   throw_step_failure(step, what, residual_N, tolerance_N());
 }
 
-int NewtonSolver::solve_linear_system(const LoadStep& step, NewtonSystem& system, NewtonLog& log) {
+int NewtonSolver::solve_linear_system(const LoadStep& step, const dealii::Vector<double>& x,
+                                      NewtonSystem& system, NewtonLog& log) {
   try {
+    // GAMG's rigid motions: a DoF's coordinate is its own position value, since the DoFs are
+    // the nodes' positions, numbered in a node's x, y, z rows (PatternMesh::dofs_in_node_blocks).
+    dealii::PETScWrappers::MPI::Vector coordinates;
+    if (linear_solver_->needs_node_coordinates() && pattern_.dofs_in_node_blocks) {
+      coordinates.reinit(pattern_.owned_dofs, comm_);
+      for (const GlobalDof i : pattern_.owned_dofs) coordinates(i) = x[i];
+      coordinates.compress(dealii::VectorOperation::insert);
+    }
     const LinearSolveResult result = linear_solver_->solve(
-        system.tangent.petsc_matrix(), system.rhs, system.increment, krylov_tolerance_);
+        system.tangent.petsc_matrix(), system.rhs, system.increment, krylov_tolerance_,
+        coordinates.size() > 0 ? static_cast<Vec>(coordinates) : nullptr);
     log.notes += result.note;
     return result.used == LinearSolverKind::direct ? 0 : result.iterations;
   } catch (const std::exception& e) {
@@ -126,7 +136,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         if (escalation > 0) assemble(x, true);
         if (escalation > 0 || shift_N_per_m > 0.0)
           MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
-        log.krylov_iterations.push_back(solve_linear_system(step, system, log));
+        log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
       } catch (const SolverError&) {
         // A singular tangent the residual's shift is too small to lift (a loose, stress-free
         // garment whose midpoint nodes have no stiffness across it): shift as after a failed

@@ -56,8 +56,10 @@ class NewtonSolver {
  private:
   // max over the rank's DoFs and every rank of |rhs_i| h / h_k(i), N (see the constructor).
   double scaled_residual_N(const NewtonSystem& system) const;
-  // Solves tangent * increment = rhs; returns the Krylov iterations (0 for direct).
-  int solve_linear_system(const LoadStep& step, NewtonSystem& system, NewtonLog& log);
+  // Solves tangent * increment = rhs at positions x; returns the Krylov iterations (0 for
+  // direct).
+  int solve_linear_system(const LoadStep& step, const dealii::Vector<double>& x,
+                          NewtonSystem& system, NewtonLog& log);
   // The increment on every DoF of every rank, constraints distributed.
   dealii::Vector<double> gather_increment(NewtonSystem& system) const;
   [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N) const;

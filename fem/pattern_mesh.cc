@@ -4,6 +4,7 @@
 #include "fem/freed_memory.h"
 #include "fem/panel_triangles.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/reference_cell.h>
@@ -60,6 +61,14 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
     build_nodes(dof_handler);
     build_cell_quadrature(dof_handler, to_grain_gradient);
   }
+  dofs_in_node_blocks = owned_dofs.is_contiguous() && owned_dofs.n_elements() % 3 == 0 &&
+                        (owned_dofs.n_elements() == 0 || owned_dofs.nth_index_in_set(0) % 3 == 0);
+  for (const auto& copies : node_copies)
+    for (const DofTriple& d : copies)
+      dofs_in_node_blocks =
+          dofs_in_node_blocks && d[0] % 3 == 0 && d[1] == d[0] + 1 && d[2] == d[0] + 2;
+  // On every rank alike: the coordinates' vector and the matrix's block size are collective.
+  dofs_in_node_blocks = dealii::Utilities::MPI::min(dofs_in_node_blocks ? 1 : 0, comm) == 1;
   release_freed_memory();
   node_constrained = ConstrainedDirections(problem.constraints, mesh.n_vertices);
   // An edge midpoint is constrained along what both its ends are.

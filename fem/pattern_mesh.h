@@ -68,6 +68,10 @@ class PatternMesh {
   // This rank's DoFs (deal.II's partition of the cells over the ranks); its size() is the
   // number of DoFs of all ranks.
   dealii::IndexSet owned_dofs;
+  // Whether every node's DoF triple is three consecutive rows starting at a multiple of 3, and
+  // every rank's DoFs whole triples (deal.II numbers a node's components together): the
+  // matrix then has blocks of 3, one node each, as GAMG's rigid motions need.
+  bool dofs_in_node_blocks = false;
   // Local DoF i of a cell is component local_component[i] of element node local_node[i].
   std::vector<int> local_component, local_node;
 

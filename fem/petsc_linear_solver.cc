@@ -11,7 +11,27 @@ void check(PetscErrorCode code, const char* call) {
 }
 
 LinearSolverKind next_in_chain(LinearSolverKind kind) {
-  return kind == LinearSolverKind::cg_amg ? LinearSolverKind::gmres_amg : LinearSolverKind::direct;
+  switch (kind) {
+    case LinearSolverKind::cg_amg:
+      return LinearSolverKind::gmres_amg;
+    case LinearSolverKind::cg_gamg:
+      return LinearSolverKind::gmres_gamg;
+    default:
+      return LinearSolverKind::direct;
+  }
+}
+
+// GAMG's near null space: the six rigid motions (three translations, three rotations about the
+// origin) of the nodes at `coordinates` (x, y, z of each node in a row, as the DoFs are
+// numbered), which the membrane's tangent maps to (about) nothing and which the coarse levels
+// must represent. The matrix's rows are taken in blocks of three, one node each.
+void set_rigid_motions(Mat A, Vec coordinates) {
+  check(MatSetBlockSize(A, 3), "MatSetBlockSize");
+  MatNullSpace rigid_motions;
+  check(VecSetBlockSize(coordinates, 3), "VecSetBlockSize");
+  check(MatNullSpaceCreateRigidBody(coordinates, &rigid_motions), "MatNullSpaceCreateRigidBody");
+  check(MatSetNearNullSpace(A, rigid_motions), "MatSetNearNullSpace");
+  check(MatNullSpaceDestroy(&rigid_motions), "MatNullSpaceDestroy");
 }
 
 }  // namespace
@@ -45,17 +65,23 @@ void PetscLinearSolver::configure() {
       check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
       break;
     case LinearSolverKind::cg_amg:
+    case LinearSolverKind::cg_gamg:
       check(KSPSetType(ksp_, KSPCG), "KSPSetType");
       break;
     case LinearSolverKind::gmres_amg:
+    case LinearSolverKind::gmres_gamg:
       check(KSPSetType(ksp_, KSPGMRES), "KSPSetType");
       check(KSPGMRESSetRestart(ksp_, 100), "KSPGMRESSetRestart");
       check(KSPSetPCSide(ksp_, PC_RIGHT), "KSPSetPCSide");
       break;
   }
-  if (kind_ != LinearSolverKind::direct) {
+  if (uses_gamg(kind_)) {
+    check(PCSetType(pc, PCGAMG), "PCSetType");
+  } else if (kind_ != LinearSolverKind::direct) {
     check(PCSetType(pc, PCHYPRE), "PCSetType");
     check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  }
+  if (kind_ != LinearSolverKind::direct) {
     // The stopping rule on the true residual, ||b - A x|| <= tol ||b||, for both methods.
     check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
     check(KSPSetTolerances(ksp_, 1e-10, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
@@ -83,8 +109,10 @@ bool PetscLinearSolver::attempt(Mat A, Vec b, Vec x, int& iterations, std::strin
   return false;
 }
 
-LinearSolveResult PetscLinearSolver::solve(Mat A, Vec b, Vec x, double relative_tolerance) {
+LinearSolveResult PetscLinearSolver::solve(Mat A, Vec b, Vec x, double relative_tolerance,
+                                           Vec node_coordinates) {
   LinearSolveResult result;
+  if (node_coordinates) set_rigid_motions(A, node_coordinates);
   for (;;) {
     std::string reason;
     result.used = kind_;

@@ -10,9 +10,10 @@
 // Fallback: conjugate gradients need a symmetric positive definite tangent. When CG reports an
 // indefinite matrix or preconditioner, or stops without converging, the system is solved again
 // by GMRES with the same BoomerAMG, and the solver stays with GMRES; when GMRES fails too, by
-// MUMPS. Each switch is recorded in `note` of the result that made it. restore_requested()
-// returns to the solver asked for: the tangent that defeated CG (a loose garment's, singular
-// at zero tension) does not last once the garment is in contact (FemBackend calls it then).
+// MUMPS (GAMG's CG likewise to GMRES with GAMG). Each switch is recorded in `note` of the result
+// that made it. restore_requested() returns to the solver asked for: the tangent that defeated CG
+// (a loose garment's, singular at zero tension) does not last once the garment is in contact
+// (FemBackend calls it then).
 
 #pragma once
 
@@ -39,7 +40,12 @@ class PetscLinearSolver {
 
   // Solves A x = b to ||b - A x|| <= relative_tolerance ||b|| (Krylov methods; the direct
   // solve is exact); throws std::runtime_error when every solver in the chain fails.
-  LinearSolveResult solve(Mat A, Vec b, Vec x, double relative_tolerance);
+  // `node_coordinates` (laid out as b, each node's x, y, z in three consecutive rows; may be
+  // null) gives GAMG the rigid motions as near null space and A a block size of 3; only
+  // needs_node_coordinates() asks for them.
+  LinearSolveResult solve(Mat A, Vec b, Vec x, double relative_tolerance,
+                          Vec node_coordinates = nullptr);
+  bool needs_node_coordinates() const { return uses_gamg(kind_); }
   // Forgets the factorization and preconditioner (call when the matrix's pattern changes).
   void reset();
   LinearSolverKind kind() const { return kind_; }

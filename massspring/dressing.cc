@@ -1,5 +1,7 @@
 #include "massspring/dressing.h"
 
+#include "contact/surface_return.h"
+
 #include "contact/rigid_body.h"
 #include "contact/scaled_body.h"
 #include "core/interruption.h"
@@ -166,25 +168,19 @@ DressingResult dress(const Problem& problem, const Garment& garment,
   // contact p / k deep: those go back onto the surface along the distance's gradient.
   result.welded_positions_m = weld_positions(welded, x);
   const double allowed_m = settings.inside_fraction * open.mean_edge_m();
-  for (int w = 0; w < welded.n_vertices; ++w) {
-    Vec3& p = result.welded_positions_m[w];
-    const SurfacePoint s = problem.body->query(p);
-    if (s.signed_distance_m >= 0.0) continue;
-    if (-s.signed_distance_m > allowed_m) {
-      std::ostringstream message;
-      message << "dressing: welded vertex " << w << " ends " << -s.signed_distance_m
-              << " m inside the body at " << where(p) << " (more than " << allowed_m
-              << " m: the garment passed into the body; grow it more slowly with more "
-                 "growth frames, or start it further out)";
-      throw SolverError(message.str());
-    }
-    result.deepest_m = std::max(result.deepest_m, -s.signed_distance_m);
-    ++result.vertices_put_back;
-    // A step along the distance's gradient reaches a flat face; near an edge of a faceted
-    // body it may fall short, so step again from there.
-    for (SurfacePoint at = s; at.signed_distance_m < 0.0; at = problem.body->query(p))
-      p -= (at.signed_distance_m - 1e-9) * at.gap_gradient;
+  const SurfaceReturn back =
+      return_onto_surface(*problem.body, result.welded_positions_m, allowed_m);
+  if (back.deepest_m > allowed_m) {
+    std::ostringstream message;
+    message << "dressing: welded vertex " << back.deepest_point << " ends " << back.deepest_m
+            << " m inside the body at " << where(result.welded_positions_m[back.deepest_point])
+            << " (more than " << allowed_m
+            << " m: the garment passed into the body; grow it more slowly with more "
+               "growth frames, or start it further out)";
+    throw SolverError(message.str());
   }
+  result.deepest_m = back.deepest_m;
+  result.vertices_put_back = back.points_moved;
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;

@@ -7,6 +7,7 @@
 #include "massspring/flat_panel_start.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/residual_history.h"
+#include "massspring/residual_location.h"
 #include "massspring/stable_time_step.h"
 
 #include <algorithm>
@@ -155,8 +156,9 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     largest_squared = std::max(largest_squared, squared);
     total_squared += squared;  // std::max drops NaN; a sum keeps it
   }
-  return std::isfinite(total_squared) ? std::sqrt(largest_squared)
-                                      : std::numeric_limits<double>::quiet_NaN();
+  if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
+  return parameters_.stop_norm == StopNorm::rms ? std::sqrt(total_squared / double(n))
+                                                : std::sqrt(largest_squared);
 }
 
 void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) const {
@@ -279,7 +281,11 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     message << "mass spring: " << step_name(step) << " " << what << " at frame " << frame
             << " (residual " << residual << " N, tolerance " << tolerance_N_ << " N, time step "
             << time_step_s_ << " s)";
-    if (with_history) message << "; " << history.text();
+    if (with_history) {
+      // Where the residual sits and whether the garment as a whole is still pushed (a slide).
+      residual_forces(x_, step.gravity_on, force_);
+      message << "; " << text(locate_residual(x_, force_, problem_.body)) << "; " << history.text();
+    }
     return SolverError(message.str());
   };
 
@@ -400,9 +406,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
            << " quasi-static, " << updates << " contact multiplier updates, " << halvings
            << " time step halvings), dt " << time_step_s_ << " s, damping " << damping_per_s_
            << " 1/s, residual " << residual << " N < ";
-  detail << tolerance_N_ << " N, largest penetration " << penetration_m << " m, "
-         << report.wall_seconds << " s (" << double(std::clock() - cpu_start) / CLOCKS_PER_SEC
-         << " s CPU)";
+  detail << tolerance_N_ << " N" << (parameters_.stop_norm == StopNorm::rms ? " (rms)" : "")
+         << ", largest penetration " << penetration_m << " m, " << report.wall_seconds << " s ("
+         << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
   if (halvings > 0) detail << "; " << history.text();
   report.detail = detail.str();
   return report;

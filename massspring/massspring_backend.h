@@ -57,7 +57,8 @@ class MassSpringBackend final : public Backend {
   double damping_per_s() const { return damping_per_s_; }
 
   // Residual force on every particle (internal + contact + gravity when on, held components
-  // removed) into `force`; returns the largest magnitude, N (NaN when one is not finite).
+  // removed) into `force`; returns the size the stop rule reads (Stop norm: the largest
+  // magnitude or the root mean square), N (NaN when one is not finite).
   double residual_forces(const std::vector<Vec3>& x, bool gravity_on,
                          std::vector<Vec3>& force) const;
   // The residual's stiffness K = -d(residual)/dx at `x` (N/m, 3n x 3n, symmetric): the

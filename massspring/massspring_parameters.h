@@ -29,6 +29,17 @@ enum class Integrator {
   implicit,
 };
 
+// Which size of the residual force field the stop rule reads (docs/model.md, "Reaching
+// equilibrium").
+enum class StopNorm {
+  // The largest residual on any vertex: every vertex balanced to within the tolerance.
+  largest,
+  // The root mean square over the vertices, sqrt(sum |f_i|^2 / n): the garment balanced on the
+  // whole while a few vertices may still chatter against a faceted body (a limit cycle the
+  // largest residual never leaves; docs/dressing.md).
+  rms,
+};
+
 struct MassSpringParameters {
   // The road to each stable state; the equilibrium, within the stop rule, is the same.
   Integrator integrator = Integrator::rk4;
@@ -49,6 +60,8 @@ struct MassSpringParameters {
   // Y h^2 / L (law stiffness scale x mean rest edge length squared / the garment's size, the
   // square root of its rest area): about the strain error left in the state.
   double relative_tolerance = 1e-4;
+  // The residual's size the stop rule and the stall test read.
+  StopNorm stop_norm = StopNorm::largest;
   // Guard against non-convergence: a load step that has not met the stop rule after this
   // many frames fails with an error.
   int maximum_frames = 200000;

@@ -123,6 +123,34 @@ TEST(Dressing, TwoHalfTubesSewnRoundTheCylinderPressLikeTheSewnTube) {
   EXPECT_EQ(b.summary.contact_fraction, 1.0);
 }
 
+TEST(Dressing, DressedTubeWornWithGravityAndFrictionCarriesItsWeight) {
+  // The top cases' settle (cases/top_female.prm): gravity on and Coulomb friction 0.3 between
+  // the garment and the body. At the stable state the body's forces on the garment (normal and
+  // friction) carry its weight and nothing else: their sum is m g upwards, m the fabric's
+  // areal density times the two panels' rest area (2 x 18.78 x 24 cm, 9.528 g, 0.09347 N).
+  const std::vector<double> alphas = {1.2};
+  std::ostringstream log;
+  CaseFile file;
+  dressing_case(file, 0.07,
+                {"Protocol/Gravity while settling=true", "Contact/Friction coefficient=0.3"});
+  const RunResult dressed =
+      testing::run_on_cylinder(file, "massspring", alphas, rest_radius_45T_m, log);
+  ASSERT_TRUE(dressed.completed) << dressed.failure << log.str();
+  const StepMeasurement& m = dressed.steps.back();
+  const FabricParameters& fabric = file.parameters().fabric;
+  const double weight_N = fabric.areal_density_kg_per_m2 * 2 * 0.1878 * 0.24 * 9.81;
+  Vec3 carried_N = Vec3::Zero();
+  for (const Vec3& f : m.state.contact_force_N) carried_N += f;
+  std::printf("weight %.6f N, carried (%.3g, %.3g, %.6f) N\n", weight_N, carried_N.x(),
+              carried_N.y(), carried_N.z());
+  // The internal forces cancel, so the carried force is the weight less the residuals' sum,
+  // each residual below the stop rule: measured 0.093469 N upwards (3e-5 of the weight short)
+  // and 6e-13 N across; 1e-3 of the weight allowed either way.
+  EXPECT_NEAR(carried_N.z(), weight_N, 1e-3 * weight_N);
+  EXPECT_NEAR(carried_N.x(), 0.0, 1e-3 * weight_N);
+  EXPECT_NEAR(carried_N.y(), 0.0, 1e-3 * weight_N);
+}
+
 TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
   // The cylinder at alpha 3 (18 cm): round it the tube stretches by 200 %, where a seam spring
   // of 20 x the stiffness scale balances the hoop tension at a gap of about 2 / 20 of a vertex's

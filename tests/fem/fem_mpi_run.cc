@@ -2,7 +2,8 @@
 // cylinder (St. Venant-Kirchhoff, held ends, alpha 1.2 - 1.8) and writes the mean pressures;
 // `mpirun -np 2 fem_mpi_run compare FILE` solves the same case with the mesh and the solves
 // distributed and fails unless every mean pressure equals the serial one to 1e-8 relative.
-// A third argument sets the element degree (1 by default).
+// A third argument sets the element degree (1 by default), a fourth the linear solver by its
+// parameter name (direct, MUMPS, by default; the reference is always written with it).
 #include "fem/fem_backend.h"
 #include "tube_problem.h"
 
@@ -16,18 +17,33 @@
 
 int main(int argc, char** argv) {
   using namespace tightfit;
-  if (argc != 3 && argc != 4) {
-    std::fprintf(stderr, "usage: fem_mpi_run write|compare FILE [ELEMENT_DEGREE]\n");
+  if (argc < 3 || argc > 5) {
+    std::fprintf(stderr, "usage: fem_mpi_run write|compare FILE [ELEMENT_DEGREE [SOLVER]]\n");
     return 2;
   }
   const std::string mode = argv[1], file = argv[2];
-  const int degree = argc == 4 ? std::stoi(argv[3]) : 1;
+  const int degree = argc >= 4 ? std::stoi(argv[3]) : 1;
+  LinearSolverKind solver = LinearSolverKind::direct;
+  if (argc == 5) {
+    bool known = false;
+    for (const LinearSolverKind kind :
+         {LinearSolverKind::direct, LinearSolverKind::cg_amg, LinearSolverKind::gmres_amg,
+          LinearSolverKind::cg_gamg, LinearSolverKind::gmres_gamg})
+      if (argv[4] == std::string(to_string(kind))) {
+        solver = kind;
+        known = true;
+      }
+    if (!known) {
+      std::fprintf(stderr, "fem_mpi_run: unknown linear solver '%s'\n", argv[4]);
+      return 2;
+    }
+  }
   std::vector<double> means;
   int rank = 0, n_ranks = 1;
   {
     testing::TubeCase tube("st venant kirchhoff", EndCondition::held_ends);
     FemParameters parameters;
-    parameters.linear_solver = LinearSolverKind::direct;
+    parameters.linear_solver = solver;
     parameters.element_degree = degree;
     FemBackend backend(tube.problem, parameters);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);

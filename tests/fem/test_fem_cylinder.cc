@@ -295,12 +295,15 @@ namespace tightfit {
 namespace {
 
 // The Krylov solvers on the finer 4 5T mesh (edges 0.63 of the paper's): the same mean pressure
-// as MUMPS; the iterations per Newton step are printed for the record.
+// as MUMPS, each without falling back to another solver (the garment presses from the first
+// iteration, so its tangent is not singular); the iterations per Newton step are printed for
+// the record. GAMG gets the rigid motions of the nodes as its near null space.
 TEST(CylinderKrylov, AmgSolversMatchTheDirectSolve) {
   const double alpha = 1.5;
   std::vector<double> means;
   for (const LinearSolverKind kind :
-       {LinearSolverKind::direct, LinearSolverKind::cg_amg, LinearSolverKind::gmres_amg}) {
+       {LinearSolverKind::direct, LinearSolverKind::cg_amg, LinearSolverKind::gmres_amg,
+        LinearSolverKind::cg_gamg, LinearSolverKind::gmres_gamg}) {
     TubeCase tube("st venant kirchhoff", EndCondition::free_ends,
                   MeshSpacing{0.63 * 0.008, 0.63 * 0.022});
     FemParameters parameters;
@@ -312,9 +315,12 @@ TEST(CylinderKrylov, AmgSolversMatchTheDirectSolve) {
     means.push_back(tube.pressure(backend.state()).mean_Pa);
     std::printf("%s, %d vertices: p_mean %.10f Pa | %s\n", to_string(kind), tube.mesh.n_vertices,
                 means.back(), report.detail.c_str());
+    EXPECT_NE(report.detail.find(std::string("krylov (") + to_string(kind) + ")"),
+              std::string::npos)
+        << report.detail;
+    EXPECT_EQ(report.detail.find("switched"), std::string::npos) << report.detail;
   }
-  EXPECT_NEAR(means[1] / means[0], 1.0, 1e-8);
-  EXPECT_NEAR(means[2] / means[0], 1.0, 1e-8);
+  for (std::size_t k = 1; k < means.size(); ++k) EXPECT_NEAR(means[k] / means[0], 1.0, 1e-8);
 }
 
 // A loose garment's tangent (no contact, zero tension: singular) sends CG down the fallback

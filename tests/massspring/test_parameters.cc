@@ -48,12 +48,14 @@ TEST(MassSpringParameters, ReadsAFileAndRejectsValuesOutOfRange) {
   MassSpringParameters::declare_parameters(prm);
   prm.parse_input_from_string(
       "subsection Mass spring\n  set Time step = 2e-5\n  set Bending rigidity = 5e-6\n"
-      "  set Maximum frames = 1000\nend\n");
+      "  set Maximum frames = 1000\n  set Stop norm = rms\nend\n");
   MassSpringParameters p;
   p.parse_parameters(prm);
   EXPECT_DOUBLE_EQ(p.time_step_s, 2e-5);
   EXPECT_DOUBLE_EQ(p.bending_rigidity_N_m, 5e-6);
   EXPECT_EQ(p.maximum_frames, 1000);
+  EXPECT_EQ(p.stop_norm, StopNorm::rms);
+  EXPECT_EQ(MassSpringParameters{}.stop_norm, StopNorm::largest);
   EXPECT_ANY_THROW(
       prm.parse_input_from_string("subsection Mass spring\n  set Damping = -1\nend\n"));
   EXPECT_ANY_THROW(

@@ -51,6 +51,39 @@ TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
   EXPECT_GT(largest_contact, 100 * report.tolerance_N);
 }
 
+TEST(MassSpringSolver, RmsStopRuleLeavesTheRootMeanSquareResidualBelowTheTolerance) {
+  // Stop norm = rms: the stable state's root mean square residual, computed here from the
+  // state's own forces, is below the tolerance, while its largest residual may exceed it (by
+  // at most sqrt(n), n the vertex count).
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  MassSpringParameters parameters;
+  parameters.stop_norm = StopNorm::rms;
+  MassSpringBackend backend(tube.problem, parameters);
+  backend.set_positions(tube.start_positions());
+  const StepReport report = backend.solve(LoadStep{0, 1.3, false});
+  const SurfaceState s = backend.state();
+  double sum_squared = 0.0, largest = 0.0;
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    const double f = (s.internal_force_N[v] + s.contact_force_N[v]).norm();
+    sum_squared += f * f;
+    largest = std::max(largest, f);
+  }
+  EXPECT_LT(std::sqrt(sum_squared / s.size()), report.tolerance_N);
+  EXPECT_LT(largest, std::sqrt(double(s.size())) * report.tolerance_N);
+  // The rms is below the largest residual, so the rms rule is met no later than the largest
+  // residual's rule from the same start, and here sooner.
+  MassSpringBackend by_largest(tube.problem, MassSpringParameters{});
+  by_largest.set_positions(tube.start_positions());
+  const StepReport largest_report = by_largest.solve(LoadStep{0, 1.3, false});
+  std::printf("frames: rms rule %d, largest-residual rule %d\n", report.iterations,
+              largest_report.iterations);
+  EXPECT_LT(report.iterations, largest_report.iterations);
+  // Every vertex presses: the contact force is far above the tolerance.
+  for (std::size_t v = 0; v < s.size(); ++v)
+    EXPECT_GT(s.contact_force_N[v].norm(), 100 * report.tolerance_N);
+}
+
 // Guards the stop rule's formula: threshold = relative tolerance x stiffness scale Y x h^2 / L,
 // h the mean rest edge and L the square root of the rest area, both in closed form for a
 // 0.3 x 0.2 m panel of 3 x 4 cells of 0.1 x 0.05 m (15 edges of 0.1 m, 16 of 0.05 m, 12
@@ -199,6 +232,10 @@ TEST(MassSpringSolver, StallEndsTheStepEarlyWithTheResidualHistory) {
   EXPECT_NE(message.find("stalled"), std::string::npos) << message;
   EXPECT_NE(message.find("after 1 time step halvings"), std::string::npos) << message;
   EXPECT_NE(message.find("residual history"), std::string::npos) << message;
+  // Where the residual sits: a vertex, its parts along and across the body's normal, and the
+  // net force on the garment.
+  EXPECT_NE(message.find("largest residual"), std::string::npos) << message;
+  EXPECT_NE(message.find("net force on the garment"), std::string::npos) << message;
   // The frame it stopped at, far below the default Maximum frames (200000).
   const std::size_t at = message.find(" at frame ");
   ASSERT_NE(at, std::string::npos) << message;

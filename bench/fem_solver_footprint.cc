@@ -1,0 +1,91 @@
+// Memory and time of the FE backend's linear solvers on one load step of the 4 5T tube, with
+// no loose start: the tube is placed round the cylinder at alpha R0 and solved there, so that
+// an iterative solver never falls back to MUMPS (the loose tube's singular tangent defeats it,
+// docs/performance.md) and the resident set is the solver's own. Runs under mpirun too.
+//
+// Usage: [mpirun -np N] fem_solver_footprint SCALE SOLVER [ALPHA]
+//   SCALE: the mesh spacing as a fraction of the paper's coarse mesh (0.8 cm round, 2.2 cm
+//   along; 0.073 gives about 97000 vertices); SOLVER: a `Finite elements/Linear solver` name;
+//   ALPHA: the cylinder's radius over the tube's (default 1.1).
+// Prints, per rank, the resident set after the setup and the peak over the run (MB), and the
+// step's Newton and Krylov iterations, wall and CPU time.
+#include "../tests/fem/tube_problem.h"
+#include "fem/fem_backend.h"
+
+#include <mpi.h>
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <string>
+
+namespace {
+
+// This process's resident set now (VmRSS), MB.
+double resident_MB() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    double kB = 0.0;
+    if (key == "VmRSS:" && status >> kB) return kB / 1024.0;
+    status.ignore(1 << 20, '\n');
+  }
+  return 0.0;
+}
+
+double peak_resident_MB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace tightfit;
+  if (argc != 3 && argc != 4) {
+    std::fprintf(stderr, "usage: fem_solver_footprint SCALE SOLVER [ALPHA]\n");
+    return 2;
+  }
+  const double scale = std::stod(argv[1]);
+  const double alpha = argc == 4 ? std::stod(argv[3]) : 1.1;
+  FemParameters parameters;
+  bool known = false;
+  for (const LinearSolverKind kind :
+       {LinearSolverKind::direct, LinearSolverKind::cg_amg, LinearSolverKind::gmres_amg,
+        LinearSolverKind::cg_gamg, LinearSolverKind::gmres_gamg})
+    if (argv[2] == std::string(to_string(kind))) {
+      parameters.linear_solver = kind;
+      known = true;
+    }
+  if (!known || !(scale > 0.0) || !(alpha > 1.0)) {
+    std::fprintf(stderr, "fem_solver_footprint: bad solver '%s', scale or alpha\n", argv[2]);
+    return 2;
+  }
+  testing::TubeCase tube("st venant kirchhoff", EndCondition::free_ends,
+                         MeshSpacing{scale * 0.008, scale * 0.022});
+  FemBackend backend(tube.problem, parameters);
+  int rank = 0, n_ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &n_ranks);
+  tube.grow_to(alpha);
+  backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
+  const double setup_MB = resident_MB();
+  const std::clock_t cpu_start = std::clock();
+  const StepReport report = backend.solve({0, alpha, false});
+  const double cpu_s = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const double mean_Pa = tube.pressure(backend.state()).mean_Pa;
+  for (int r = 0; r < n_ranks; ++r) {
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (r == rank)
+      std::printf(
+          "rank %d of %d: %d vertices, %s: resident %.0f MB after setup, peak %.0f MB; "
+          "%.1f s CPU, p_mean %.10f Pa\n",
+          rank, n_ranks, tube.mesh.n_vertices, argv[2], setup_MB, peak_resident_MB(), cpu_s,
+          mean_Pa);
+    std::fflush(stdout);
+  }
+  if (rank == 0) std::printf("%s\n", report.detail.c_str());
+  return 0;
+}
