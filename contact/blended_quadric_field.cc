@@ -76,13 +76,14 @@ void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
   shift_m_.assign(n, 0.0);
   std::vector<double> misfit(n, 0.0);
   for (int sweep = 0; sweep < interpolation_sweeps; ++sweep) {
-    for (int j = 0; j < n; ++j) misfit[j] = evaluate(p_[j], triangles[a_triangle[j]]).phi_m;
+    for (int j = 0; j < n; ++j)
+      misfit[j] = evaluate(p_[j], triangles[a_triangle[j]], n_[j], Mat3::Zero()).phi_m;
     for (int j = 0; j < n; ++j) shift_m_[j] -= misfit[j];
   }
 }
 
-BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x,
-                                                         const Triangle& seed) const {
+BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Triangle& seed,
+                                                         const Vec3& m, const Mat3& dm_dx) const {
   // The vertices whose support holds x, walked from the seed over the edges. The visit marks
   // live per thread and are stamped per query, so no query clears them.
   thread_local std::vector<unsigned> mark;
@@ -103,8 +104,10 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x,
     const Vec3 delta = x - p_[i];
     const double s = support_m_[i], distance = delta.norm(), r = distance / s;
     const bool seed_vertex = q < 3;
-    if (r >= 1.0 && !seed_vertex) continue;
-    if (r < 1.0) {
+    if (r >= 2.0 && !seed_vertex) continue;
+    // The facing factor: S((n_i . m + 1/2) / (1/2)), S the quintic smoothstep.
+    const double a = 2.0 * (n_[i].dot(m) + 0.5);
+    if (r < 1.0 && a > 0.0) {
       // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
       // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
       const double u = 1.0 - r;
@@ -114,6 +117,19 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x,
       t.dw = -20.0 * u * u * u * delta / (s * s);
       t.hw = -20.0 / (s * s) * u * u * u * Mat3::Identity();
       if (distance > 0) t.hw += 60.0 / (s * s) * u * u * delta * delta.transpose() / (distance * s);
+      if (a < 1.0) {
+        // w <- w S(a): grad (w S) = S grad w + w S' grad a, grad a = 2 (dm/dx)^T n_i; its
+        // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T, the
+        // second derivative of m left out (it only acts where S is between 0 and 1, on vertices
+        // turned 90 to 120 degrees away, far out in the blend).
+        const double S = a * a * a * (10 - 15 * a + 6 * a * a);
+        const double dS = 30 * a * a * (1 - a) * (1 - a), d2S = 60 * a * (1 - a) * (1 - 2 * a);
+        const Vec3 da = 2.0 * dm_dx.transpose() * n_[i];
+        t.hw = S * t.hw + dS * (t.dw * da.transpose() + da * t.dw.transpose()) +
+               t.w * d2S * da * da.transpose();
+        t.dw = S * t.dw + t.w * dS * da;
+        t.w *= S;
+      }
       const Vec3 curved = curvature_[i] * delta;
       t.d = n_[i].dot(delta) + 0.5 * delta.dot(curved) + shift_m_[i];
       t.dd = n_[i] + curved;

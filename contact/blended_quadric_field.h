@@ -49,9 +49,16 @@ class BlendedQuadricField {
     Mat3 hessian_per_m = Mat3::Zero();  // d2 phi / dx2, symmetric
   };
   // The field at x. The vertices that add to it are gathered from `seed` (the corners of the
-  // flat surface's closest triangle) over the mesh's edges, through vertices whose support
-  // holds x: the blend stays geodesically local, so a thigh never feels the other thigh.
-  Value evaluate(const Vec3& x_m, const Triangle& seed) const;
+  // flat surface's closest triangle) over the mesh's edges, through vertices within twice
+  // their support of x. Each weight is also scaled by the quintic smoothstep of
+  // (n_i . m + 1/2) / (1/2), m = `reference_normal` (the flat surface's interpolated normal at
+  // x, with derivative `reference_normal_derivative`): a vertex whose normal is more than 120
+  // degrees from m adds nothing, one within 90 degrees adds fully, so the other side of a thin
+  // gap (the inner thigh across the crotch) never enters the blend, whether or not the walk
+  // reaches it. Without that factor the walk reached the other thigh through the crotch for
+  // some x only, and the field jumped there.
+  Value evaluate(const Vec3& x_m, const Triangle& seed, const Vec3& reference_normal,
+                 const Mat3& reference_normal_derivative) const;
 
   // K_i, 1/m (symmetric, zero along n_i).
   const Mat3& curvature(int vertex) const { return curvature_[vertex]; }

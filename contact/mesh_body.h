@@ -25,6 +25,8 @@ struct MeshBodyOptions {
   // `smooth`, the blended osculating quadrics' signed-distance field (blended_quadric_field.h),
   // a C2 field whose gradient is the contact normal, so that the contact force derives from an
   // energy and Newton's tangent is its symmetric Hessian.
+  // Faceted here, the flat-face geometry the unit tests check; a case file's
+  // Body/Mesh/Contact surface defaults to smooth.
   enum class ContactSurface { faceted, smooth };
   ContactSurface contact_surface = ContactSurface::faceted;
 };

@@ -47,7 +47,7 @@ void declare_mesh_body_settings(ParameterTree& prm) {
                      "The contact surface lies this far outside the mesh along its normal "
                      "(padding, an undergarment) (m).");
   prm.declare_selection(
-      "Contact surface", "faceted", "smooth|faceted",
+      "Contact surface", "smooth", "smooth|faceted",
       "The surface the garment touches: smooth, the signed distance to blended osculating "
       "quadrics at the vertices (a C2 field whose gradient is the contact normal, so the "
       "contact force derives from an energy); faceted, the distance to the flat faces with the "
