@@ -11,6 +11,7 @@
 #include "cylinder_start.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -36,7 +37,9 @@ struct SettledTube {
 const SettledTube& settled_tube() {
   static const SettledTube tube = [] {
     SettledTube t;
-    const fs::path dir = fs::temp_directory_path() / "tightfit_test_from_file";
+    // Each test runs in its own process under ctest, several at once: one directory each.
+    const fs::path dir =
+        fs::temp_directory_path() / ("tightfit_test_from_file_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     CaseFile file;
     file.read(source_dir + "/cases/cylinder_45T.prm", {"Output/Write VTU=true"});
