@@ -36,17 +36,20 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
                                                          parameters.max_linear_iterations, comm)) {
-  dof_weight_.assign(pattern.n_dofs(), 1.0);
+  const dealii::IndexSet& owned = pattern.owned_dofs;
+  dof_weight_.assign(owned.n_elements(), 1.0);
   for (int node = 0; node < pattern.n_nodes(); ++node)
     for (const DofTriple& copy : pattern.node_copies[node])
       for (const GlobalDof i : copy)
-        dof_weight_[i] = pattern.mean_edge_m / pattern.node_edge_m[node];
+        if (owned.is_element(i))
+          dof_weight_[owned.index_within_set(i)] = pattern.mean_edge_m / pattern.node_edge_m[node];
 }
 
 double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
   double largest = 0.0, sum_squared = 0.0;
+  std::size_t k = 0;  // i's position among the owned DoFs (the range visits them in order)
   for (const GlobalDof i : pattern_.owned_dofs) {
-    const double r = std::abs(system.rhs(i)) * dof_weight_[i];
+    const double r = std::abs(system.rhs(i)) * dof_weight_[k++];
     largest = std::max(largest, r);
     sum_squared += r * r;  // std::max drops NaN; the sum keeps it
   }

@@ -87,7 +87,8 @@ class NewtonSolver {
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
-  // Per DoF, h / h_k of the node it belongs to (every copy of a seam node alike).
+  // Per DoF this rank owns (in the order of pattern.owned_dofs), h / h_k of the node it belongs
+  // to (every copy of a seam node alike).
   std::vector<double> dof_weight_;
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;
