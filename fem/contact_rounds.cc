@@ -114,25 +114,41 @@ ContactRoundsResult ContactRounds::solve(const LoadStep& step, NewtonSolver& new
 
   ContactRoundsResult result;
   bool gap_closed = false;
+  // One line per round for the message of a step whose gap does not close.
+  std::string history =
+      "rounds (round, Newton iterations, first / last residual N, largest penetration m after "
+      "the update, nodes in contact):";
   for (int round = 0; round < parameters_.max_augmented_lagrangian_iterations; ++round) {
     const std::size_t first = log.residual_N.size();
-    result.newton_iterations += newton.solve(step, assemble, system, x, log);
-    result.rounds.push_back(format_residuals(
-        std::vector<double>(log.residual_N.begin() + first, log.residual_N.end())));
+    const int iterations = newton.solve(step, assemble, system, x, log);
+    result.newton_iterations += iterations;
     result.n_active = update_multipliers(x);
+    std::ostringstream gap;
+    gap.precision(2);
+    gap << std::scientific << "; gap " << max_penetration_m_ << " m, " << result.n_active
+        << " in contact";
+    result.rounds.push_back(format_residuals(std::vector<double>(log.residual_N.begin() + first,
+                                                                 log.residual_N.end())) +
+                            gap.str());
+    std::ostringstream summary;
+    summary.precision(2);
+    summary << std::scientific << "\n  " << round << "  " << iterations << "  "
+            << log.residual_N[first] << " / " << log.residual_N.back() << "  " << max_penetration_m_
+            << "  " << result.n_active;
+    history += summary.str();
     if (max_penetration_m_ <= parameters_.gap_tolerance_m) {
       gap_closed = true;
       break;
     }
   }
   const double residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  if (!gap_closed)
-    throw_step_failure(step,
-                       "the contact gap did not close (largest penetration " +
-                           std::to_string(max_penetration_m_) + " m) after " +
-                           std::to_string(parameters_.max_augmented_lagrangian_iterations) +
-                           " augmented-Lagrangian updates",
-                       residual_N, newton.tolerance_N());
+  if (!gap_closed) {
+    std::ostringstream what;
+    what << "the contact gap did not close (largest penetration " << max_penetration_m_
+         << " m, tolerance " << parameters_.gap_tolerance_m << " m) after "
+         << parameters_.max_augmented_lagrangian_iterations << " augmented-Lagrangian updates";
+    throw_step_failure(step, what.str(), residual_N, newton.tolerance_N(), history);
+  }
   if (had_contact_ && result.n_active == 0)
     throw_step_failure(step, "contact lost", residual_N, newton.tolerance_N());
   commit_friction(x);

@@ -159,8 +159,9 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   for (int k : log.krylov_iterations) detail << " " << k;
   if (!log.notes.empty()) detail << " [" << log.notes << "]";
   if (log.n_shifted_solves > 0) detail << "; " << log.n_shifted_solves << " shifted tangents";
-  detail << "; max gap " << contact_.max_penetration_m() << " m; " << rounds.n_active
-         << " in contact";
+  detail << "; stop rule " << report.tolerance_N << " N"
+         << (parameters_.stop_on_rms ? " (rms)" : "") << "; max gap "
+         << contact_.max_penetration_m() << " m; " << rounds.n_active << " in contact";
   if (contact_.nodes().friction.active()) detail << ", " << contact_.n_slipping() << " slipping";
   if (parameters_.element_degree != 1)
     detail << "; vertex forces are the recovered traction (degree " << parameters_.element_degree

@@ -75,9 +75,9 @@ std::string NewtonSolver::failure_details(const NewtonSystem& system,
     for (const DofTriple& copy : pattern_.node_copies[node])
       for (int c = 0; c < 3; ++c) residual[node][c] += rhs[copy[c]];
   }
-  // Windows of 20 iterations; the stall test's verdict is not used (the iteration limit and
-  // the line search judge Newton's method).
-  ResidualHistory history(20, 0.5, "Newton iterations", "step length taken there");
+  // Windows of 20 iterations, marked 'stalled' where the residual fell by less than a tenth
+  // over one (the mark only informs: the iteration limit ends the step).
+  ResidualHistory history(20, 0.9, "Newton iterations", "step length taken there");
   for (std::size_t k = 0; k < log.residual_N.size(); ++k)
     history.record(static_cast<int>(k), log.residual_N[k],
                    k < log.step_length.size() ? log.step_length[k] : 0.0);

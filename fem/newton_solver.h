@@ -40,13 +40,14 @@ class NewtonSolver {
 
   // Y = stiffness_scale_N_per_m, h = pattern.mean_edge_m. The stop rule's force is 'Residual
   // tolerance' times Y h or, when 'Relative tolerance' is set, that times tension_scale_N, the
-  // mass-spring backend's Y h^2 / L (core/garment.h). The step is capped at half of h. On a graded
-  // mesh each node's residual counts relative to its own edge h_k (pattern.node_edge_m): the stop
-  // rule reads R_k h / h_k, the force the same strain error would leave on a node of mean size, its
-  // largest component or the rms of the nodes' vectors ('Stop norm'). `body` (may be null) names
-  // where a failed step's residual sits.
+  // mass-spring backend's Y h^2 / L (core/tension_scale.h). The step is capped at half of h. On a
+  // graded mesh each node's residual counts relative to its own edge h_k (pattern.node_edge_m): the
+  // stop rule reads R_k h / h_k, the force the same strain error would leave on a node of mean
+  // size, its largest component or the rms of the nodes' vectors ('Stop norm'). `body` (may be
+  // null) names where a failed step's residual sits.
   NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
-               double stiffness_scale_N_per_m, double size_m, const RigidBody* body, MPI_Comm comm);
+               double stiffness_scale_N_per_m, double tension_scale_N, const RigidBody* body,
+               MPI_Comm comm);
 
   double tolerance_N() const { return tolerance_N_; }
   // Forgets the tangent's shift of earlier steps (call at the start of a load step).

@@ -6,13 +6,16 @@
 // the history of its iterations.
 #include "cases/cylinder_theory.h"
 #include "core/mesh_geometry.h"
+#include "fem/contact_nodes.h"
 #include "fem/fem_backend.h"
 #include "tube_problem.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 namespace tightfit {
 namespace {
@@ -75,6 +78,42 @@ TEST(FemStopRule, TensionScaleRuleMeetsTheMassSpringThresholdAndTheClosedForm) {
   // The discretisation's own error against p = T / r (the inscribed polygon of 20 vertices
   // round; measured 2.2 %).
   EXPECT_LT(std::abs(tight.p_mean_Pa / theory - 1), 3e-2);
+}
+
+// The tops' rule (rms at 3e-3 of the tension scale) with their gravity and friction 0.3, on a
+// tube round a horizontal cylinder: the internal forces cancel, so the body's normal and
+// friction forces plus the weight sum to the sum of the residuals, which Cauchy-Schwarz bounds
+// by n times the largest weight h_k / h times the rms the rule accepted (a node's residual
+// counts h / h_k in the rule).
+TEST(FemStopRule, RmsRuleWithGravityAndFrictionCarriesTheWeight) {
+  TubeCase tube("linear biot", EndCondition::free_ends, MeshSpacing{0.03, 0.06});
+  tube.problem.gravity_m_per_s2 = Vec3(0.0, -9.81, 0.0);  // across the axis (z)
+  tube.problem.friction_coefficient = 0.3;
+  const double h = mean_rest_edge_length_m(tube.mesh);
+  tube.problem.tangential_stiffness_Pa_per_m = 100.0 * tube.law->stiffness_scale() / (h * h);
+  FemParameters parameters;
+  parameters.relative_tolerance = 3e-3;
+  parameters.stop_on_rms = true;
+  parameters.gap_tolerance_m = 1e-6;
+  FemBackend backend(tube.problem, parameters);
+  const double alpha = 1.2;
+  tube.grow_to(alpha);
+  backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
+  const StepReport report = backend.solve({0, alpha, true});
+  Vec3 carried = Vec3::Zero();
+  for (const Vec3& f : backend.state().contact_force_N) carried += f;
+  const Vec3 weight =
+      tube.fabric.areal_density_kg_per_m2 * rest_area(tube.mesh) * tube.problem.gravity_m_per_s2;
+  const std::vector<double> h_k = node_edge_lengths_m(tube.mesh, {}, 1);
+  const double largest_weight = *std::max_element(h_k.begin(), h_k.end()) /
+                                (std::accumulate(h_k.begin(), h_k.end(), 0.0) / h_k.size());
+  const double bound_N = tube.mesh.n_vertices * largest_weight * report.residual_N;
+  std::printf("contact + friction %.6e N, weight %.6e N, |sum| %.3e N (bound %.3e N); %s\n",
+              carried.y(), weight.y(), (carried + weight).norm(), bound_N, report.detail.c_str());
+  EXPECT_LE(report.residual_N, report.tolerance_N);
+  EXPECT_LT((carried + weight).norm(), bound_N);
+  // Measured 8.7e-4 of the weight (Newton's last step lands well below the rule); 3e-3.
+  EXPECT_LT((carried + weight).norm(), 3e-3 * weight.norm());
 }
 
 // The message of a step that runs out of iterations: where the largest residual sits and the
