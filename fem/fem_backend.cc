@@ -4,6 +4,7 @@
 // post-processing (fem_state.h) behind the light fem_backend.h.
 #include "fem/fem_backend.h"
 
+#include "core/tension_scale.h"
 #include "fem/contact_rounds.h"
 #include "fem/fem_constraints.h"
 #include "fem/fem_state.h"
@@ -91,8 +92,9 @@ class FemBackend::Implementation {
         pattern_(problem_, parameters.element_degree, comm_),
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
         assembly_(pattern_, problem_, uses_cg(parameters.linear_solver), comm_),
-        newton_(pattern_, parameters, problem.law->stiffness_scale() * pattern_.mean_edge_m,
-                problem.law->stiffness_scale(), comm_),
+        newton_(pattern_, parameters, problem.law->stiffness_scale(),
+                tension_scale_N(*problem.mesh, problem.law->stiffness_scale()), problem.body,
+                comm_),
         contact_(pattern_, problem_, parameters) {
     // Start flat in the layout plane until the caller places the garment.
     const SimulationMesh& mesh = *problem.mesh;

@@ -66,8 +66,11 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
   // stores only its own rows (entries in other rows are dropped as they are added).
   {
     dealii::DynamicSparsityPattern sparsity(pattern.n_dofs(), pattern.n_dofs(), pattern.owned_dofs);
-    for (const std::vector<GlobalDof>& dofs : pattern.cell_dofs)
+    std::vector<GlobalDof> dofs;
+    for (int cell = 0; cell < pattern.n_cells(); ++cell) {
+      pattern.get_cell_dofs(cell, dofs);
       constraints.add_entries_local_to_global(dofs, sparsity, false);
+    }
     system.tangent.reinit(pattern.owned_dofs, pattern.owned_dofs, sparsity, comm);
   }
   release_freed_memory();

@@ -82,6 +82,19 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "below this fraction of Y h_k, the law's stiffness scale (N/m) times the rest "
                     "edge length of its node (the mean of the edges meeting there, m): "
                     "dimensionless.");
+  prm.declare_entry("Relative tolerance", "0", Double(0, 1),
+                    "0: the stop rule is Residual tolerance. Otherwise Newton stops when the "
+                    "residual (Stop norm) is below this times the tension scale Y h^2 / L, the "
+                    "mass-spring backend's stop rule ('Mass spring/Relative tolerance'): Y the "
+                    "law's stiffness scale (N/m), h the mean rest edge (m), L the square root of "
+                    "the garment's rest area (m). It bounds the smooth strain error by about this "
+                    "fraction on every mesh (docs/model.md, 'Reaching equilibrium'): "
+                    "dimensionless.");
+  prm.declare_entry("Stop norm", "largest", Selection("largest|rms"),
+                    "Which size of the residual the stop rule reads, each node's residual "
+                    "weighted by h / h_k. 'largest': its largest component on any free degree "
+                    "of freedom. 'rms': the root mean square over the nodes of their residual "
+                    "vectors' lengths, sqrt(sum |R_k|^2 / n), as 'Mass spring/Stop norm'.");
   prm.declare_entry("Maximum Newton iterations", std::to_string(d.max_newton_iterations),
                     Integer(1, 1000),
                     "Newton iterations per augmented-Lagrangian round before the step fails "
@@ -150,6 +163,8 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   linear_tolerance = prm.get_double("Linear solver tolerance");
   max_linear_iterations = prm.get_integer("Maximum linear iterations");
   residual_tolerance = prm.get_double("Residual tolerance");
+  relative_tolerance = prm.get_double("Relative tolerance");
+  stop_on_rms = prm.get("Stop norm") == "rms";
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   line_search = prm.get_bool("Line search");
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");

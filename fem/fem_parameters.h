@@ -44,6 +44,13 @@ struct FemParameters {
   // residual_tolerance * Y * h_k (Y the law's stiffness scale, N/m; h_k the rest edge length of
   // the degree of freedom's node, m: fem/contact_nodes.h).
   double residual_tolerance = 1e-10;
+  // When > 0, the stop rule of the mass-spring backend instead (its 'Relative tolerance'):
+  // Newton stops when the residual (stop_norm) is below relative_tolerance * Y h^2 / L, the
+  // tension scale (h the mean rest edge, L the square root of the garment's rest area).
+  double relative_tolerance = 0.0;
+  // Which size of the residual field the stop rule reads: its largest component, or the root
+  // mean square of the nodes' residual vectors (both weighted by h / h_k, newton_solver.h).
+  bool stop_on_rms = false;
   int max_newton_iterations = 40;
   bool line_search = true;
   int max_line_search_halvings = 10;

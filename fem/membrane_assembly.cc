@@ -36,7 +36,7 @@ void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<doubl
                                    Eigen::VectorXd& gradient, Eigen::MatrixXd* hessian) const {
   const unsigned int n_local = pattern_.n_local_dofs();
   const unsigned int n_element_nodes = pattern_.n_element_nodes();
-  const std::vector<GlobalDof>& dofs = pattern_.cell_dofs[cell];
+  const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs[cell];
   gradient.setZero(n_local);
   if (hessian) hessian->setZero(n_local, n_local);
   std::vector<Vec2> grad_grain(n_element_nodes);
@@ -78,9 +78,11 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
   dealii::Vector<double> cell_rhs(n_local);
   Eigen::VectorXd gradient;
   Eigen::MatrixXd hessian;
+  std::vector<GlobalDof> dofs;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
     if (!pattern_.cell_owned[cell]) continue;
     cell_kernel(cell, x, gradient, with_tangent ? &hessian : nullptr);
+    pattern_.get_cell_dofs(cell, dofs);
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = pattern_.node_major(i);
       // The weight is constant: a load on the right-hand side, nothing in the tangent.
@@ -91,10 +93,10 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
           cell_matrix(i, j) = hessian(a, pattern_.node_major(j));
     }
     if (with_tangent)
-      system.constraints.distribute_local_to_global(cell_matrix, cell_rhs, pattern_.cell_dofs[cell],
-                                                    system.tangent, system.rhs);
+      system.constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system.tangent,
+                                                    system.rhs);
     else
-      system.constraints.distribute_local_to_global(cell_rhs, pattern_.cell_dofs[cell], system.rhs);
+      system.constraints.distribute_local_to_global(cell_rhs, dofs, system.rhs);
   }
 
   // Contact at the nodes (vertices, and midpoints for degree 2: without them the quadratic

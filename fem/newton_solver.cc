@@ -1,6 +1,8 @@
 #include "fem/newton_solver.h"
 
+#include "contact/residual_location.h"
 #include "core/interruption.h"
+#include "core/residual_history.h"
 
 #include <petscmat.h>
 
@@ -12,42 +14,80 @@
 namespace tightfit {
 
 void throw_step_failure(const LoadStep& step, const std::string& what, double residual_N,
-                        double tolerance_N) {
+                        double tolerance_N, const std::string& details) {
   std::ostringstream out;
   out << "fem backend, load step " << step.index << " (alpha " << step.alpha << "): " << what
       << "; residual " << residual_N << " N (tolerance " << tolerance_N << " N)";
+  if (!details.empty()) out << "; " << details;
   throw SolverError(out.str());
 }
 
 NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
-                           double force_scale_N, double stiffness_scale_N_per_m, MPI_Comm comm)
+                           double stiffness_scale_N_per_m, double tension_scale_N,
+                           const RigidBody* body, MPI_Comm comm)
     : pattern_(pattern),
       parameters_(parameters),
-      force_scale_N_(force_scale_N),
       stiffness_scale_N_per_m_(stiffness_scale_N_per_m),
+      tolerance_N_(parameters.relative_tolerance > 0.0
+                       ? parameters.relative_tolerance * tension_scale_N
+                       : parameters.residual_tolerance * stiffness_scale_N_per_m *
+                             pattern.mean_edge_m),
+      body_(body),
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
                                                          parameters.max_linear_iterations, comm)) {
-  dof_weight_.assign(pattern.n_dofs(), 1.0);
+  const dealii::IndexSet& owned = pattern.owned_dofs;
+  dof_weight_.assign(owned.n_elements(), 1.0);
   for (int node = 0; node < pattern.n_nodes(); ++node)
     for (const DofTriple& copy : pattern.node_copies[node])
       for (const GlobalDof i : copy)
-        dof_weight_[i] = pattern.mean_edge_m / pattern.node_edge_m[node];
+        if (owned.is_element(i))
+          dof_weight_[owned.index_within_set(i)] = pattern.mean_edge_m / pattern.node_edge_m[node];
 }
 
 double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
-  double largest = 0.0, sum = 0.0;
+  double largest = 0.0, sum_squared = 0.0;
+  std::size_t k = 0;  // i's position among the owned DoFs (the range visits them in order)
   for (const GlobalDof i : pattern_.owned_dofs) {
-    const double r = std::abs(system.rhs(i)) * dof_weight_[i];
+    const double r = std::abs(system.rhs(i)) * dof_weight_[k++];
     largest = std::max(largest, r);
-    sum += r;  // std::max drops NaN; the sum keeps it
+    sum_squared += r * r;  // std::max drops NaN; the sum keeps it
   }
-  largest = std::isfinite(sum) ? largest : std::numeric_limits<double>::quiet_NaN();
+  // A node's residual vector lies on its free DoFs (a seam's other copies and a held
+  // direction's DoF carry none): the sum over DoFs is the sum of |R_k|^2 over the nodes.
+  sum_squared = dealii::Utilities::MPI::sum(sum_squared, comm_);
+  if (!std::isfinite(sum_squared)) return std::numeric_limits<double>::quiet_NaN();
+  if (parameters_.stop_on_rms) return std::sqrt(sum_squared / pattern_.n_nodes());
   return dealii::Utilities::MPI::max(largest, comm_);
 }
 
-void NewtonSolver::fail(const LoadStep& step, const std::string& what, double residual_N) const {
-  throw_step_failure(step, what, residual_N, tolerance_N());
+std::string NewtonSolver::failure_details(const NewtonSystem& system,
+                                          const dealii::Vector<double>& x,
+                                          const NewtonLog& log) const {
+  dealii::Vector<double> rhs(pattern_.n_dofs());
+  for (const auto i : pattern_.owned_dofs) rhs[i] = system.rhs(i);
+  MPI_Allreduce(MPI_IN_PLACE, rhs.begin(), static_cast<int>(rhs.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+  // rhs = -R: the residual force on each node, summed over its copies.
+  std::vector<Vec3> positions(pattern_.n_nodes()), residual(pattern_.n_nodes(), Vec3::Zero());
+  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+    positions[node] = pattern_.node_position(x, node);
+    for (const DofTriple& copy : pattern_.node_copies[node])
+      for (int c = 0; c < 3; ++c) residual[node][c] += rhs[copy[c]];
+  }
+  // Windows of 20 iterations; the stall test's verdict is not used (the iteration limit and
+  // the line search judge Newton's method).
+  ResidualHistory history(20, 0.5, "Newton iterations", "step length taken there");
+  for (std::size_t k = 0; k < log.residual_N.size(); ++k)
+    history.record(static_cast<int>(k), log.residual_N[k],
+                   k < log.step_length.size() ? log.step_length[k] : 0.0);
+  return text(locate_residual(positions, residual, body_)) + " (node numbers: welded vertices, " +
+         "then edge midpoints); " + history.text();
+}
+
+void NewtonSolver::fail(const LoadStep& step, const std::string& what, double residual_N,
+                        const std::string& details) const {
+  throw_step_failure(step, what, residual_N, tolerance_N(), details);
 }
 
 int NewtonSolver::solve_linear_system(const LoadStep& step, const dealii::Vector<double>& x,
@@ -70,7 +110,7 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const dealii::Vector
     fail(step,
          std::string("linear solver '") + to_string(parameters_.linear_solver) +
              "' failed: " + e.what(),
-         system.rhs.linfty_norm());
+         system.rhs.linfty_norm(), failure_details(system, x, log));
   }
 }
 
@@ -114,7 +154,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
                             : parameters_.linear_tolerance;
     if (iteration >= parameters_.max_newton_iterations)
       fail(step, "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
-           residual_N);
+           residual_N, failure_details(system, x, log));
     const double norm_0 = system.rhs.l2_norm();
     // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
     // or indefinite tangent, along which Newton's step may be huge or useless. When the line
@@ -123,6 +163,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // untouched, so the converged state is not biased.
     dealii::Vector<double> trial(x);
     bool tangent_current = false;
+    double step_taken = 0.0;
     for (int escalation = 0;; ++escalation) {
       // Yamashita and Fukushima's mu ~ |R|: it damps the step where the residual is large and
       // vanishes with it, so that convergence stays quadratic, even when the tangent is
@@ -152,7 +193,8 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       // A step longer than half an edge leaves the region where the linearisation holds (and
       // may carry the garment, which has no bending stiffness, into a folded state): shorten
       // it.
-      double s = std::min(1.0, 0.5 * mean_edge_m / increment.linfty_norm());
+      step_taken = std::min(1.0, 0.5 * mean_edge_m / increment.linfty_norm());
+      double& s = step_taken;  // halved by the line search
       bool accepted = !parameters_.line_search;
       for (int halving = 0; parameters_.line_search; ++halving) {
         trial = x;
@@ -181,6 +223,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       ++log.n_shifted_solves;
     }
     x = trial;
+    log.step_length.push_back(step_taken);
     if (!tangent_current) assemble(x, true);
   }
 }

@@ -4,6 +4,7 @@
 // membrane is slack. The residual is never modified, so the converged state is unbiased.
 #pragma once
 
+#include "contact/rigid_body.h"
 #include "core/backend.h"
 #include "fem/fem_parameters.h"
 #include "fem/newton_system.h"
@@ -17,13 +18,16 @@
 
 namespace tightfit {
 
-// Throws SolverError naming the step (index, alpha), what failed and the residual.
+// Throws SolverError naming the step (index, alpha), what failed and the residual, then
+// `details` (where the residual sits, its history) when not empty.
 [[noreturn]] void throw_step_failure(const LoadStep& step, const std::string& what,
-                                     double residual_N, double tolerance_N);
+                                     double residual_N, double tolerance_N,
+                                     const std::string& details = "");
 
 // What a load step's Newton solves did, for its report.
 struct NewtonLog {
-  std::vector<double> residual_N;      // per iteration, max_k |R_k| h / h_k (the stop rule's)
+  std::vector<double> residual_N;      // per iteration, the stop rule's size of R (see solve())
+  std::vector<double> step_length;     // per iteration, the fraction of Newton's step taken
   std::vector<int> krylov_iterations;  // per linear solve (0 for the direct solver)
   std::string notes;                   // linear solver switches
   int n_shifted_solves = 0;            // tangents shifted after failed line searches
@@ -34,14 +38,17 @@ class NewtonSolver {
   // Fills system.rhs = -R(x) (constrained), and system.tangent = dR/dx when asked.
   using Assembler = std::function<void(const dealii::Vector<double>& x, bool with_tangent)>;
 
-  // force_scale_N: Y h, the stop rule's force unit (h = pattern.mean_edge_m); the step is
-  // capped at half of h. On a graded mesh each node's residual counts relative to its own
-  // edge h_k (pattern.node_edge_m): the stop rule reads max_k |R_k| h / h_k, the force the
-  // same strain error would leave on a node of mean size.
-  NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters, double force_scale_N,
-               double stiffness_scale_N_per_m, MPI_Comm comm);
+  // Y = stiffness_scale_N_per_m, h = pattern.mean_edge_m. The stop rule's force is 'Residual
+  // tolerance' times Y h or, when 'Relative tolerance' is set, that times tension_scale_N, the
+  // mass-spring backend's Y h^2 / L (core/garment.h). The step is capped at half of h. On a graded
+  // mesh each node's residual counts relative to its own edge h_k (pattern.node_edge_m): the stop
+  // rule reads R_k h / h_k, the force the same strain error would leave on a node of mean size, its
+  // largest component or the rms of the nodes' vectors ('Stop norm'). `body` (may be null) names
+  // where a failed step's residual sits.
+  NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
+               double stiffness_scale_N_per_m, double size_m, const RigidBody* body, MPI_Comm comm);
 
-  double tolerance_N() const { return parameters_.residual_tolerance * force_scale_N_; }
+  double tolerance_N() const { return tolerance_N_; }
   // Forgets the tangent's shift of earlier steps (call at the start of a load step).
   void start_step() { shift_N_per_m_ = 0.0; }
   // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
@@ -54,26 +61,34 @@ class NewtonSolver {
             dealii::Vector<double>& x, NewtonLog& log);
 
  private:
-  // max over the rank's DoFs and every rank of |rhs_i| h / h_k(i), N (see the constructor).
+  // The stop rule's size of rhs over every rank, N: the largest |rhs_i| h / h_k(i), or the rms
+  // over the nodes (see the constructor).
   double scaled_residual_N(const NewtonSystem& system) const;
+  // Where the residual at x sits (contact/residual_location.h) and the history of the step's
+  // iterations, for the message of a failed step.
+  std::string failure_details(const NewtonSystem& system, const dealii::Vector<double>& x,
+                              const NewtonLog& log) const;
   // Solves tangent * increment = rhs at positions x; returns the Krylov iterations (0 for
   // direct).
   int solve_linear_system(const LoadStep& step, const dealii::Vector<double>& x,
                           NewtonSystem& system, NewtonLog& log);
   // The increment on every DoF of every rank, constraints distributed.
   dealii::Vector<double> gather_increment(NewtonSystem& system) const;
-  [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N) const;
+  [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N,
+                         const std::string& details = "") const;
 
   const PatternMesh& pattern_;
   FemParameters parameters_;
-  double force_scale_N_;
   double stiffness_scale_N_per_m_;
+  double tolerance_N_;
+  const RigidBody* body_;
   MPI_Comm comm_;
   std::unique_ptr<PetscLinearSolver> linear_solver_;
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
-  // Per DoF, h / h_k of the node it belongs to (every copy of a seam node alike).
+  // Per DoF this rank owns (in the order of pattern.owned_dofs), h / h_k of the node it belongs
+  // to (every copy of a seam node alike).
   std::vector<double> dof_weight_;
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;

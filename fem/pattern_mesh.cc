@@ -205,6 +205,12 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
     return false;
   };
   node_rest_area_m2_.assign(n_nodes(), 0.0);
+  cell_dofs.reset(n_local);
+  cell_JxW_m2.reset(quadrature.size());
+  cell_grad_grain.reset(quadrature.size() * n_nodes_per_cell);
+  cell_node_rest_area_m2.reset(n_nodes_per_cell);
+  std::vector<double> JxW(quadrature.size());
+  std::vector<Vec2> grad_grain(quadrature.size() * n_nodes_per_cell);
   std::vector<GlobalDof> dofs(n_local);
   std::vector<double> node_area_m2(n_nodes_per_cell);
   for (const auto& cell : dof_handler.active_cell_iterators()) {
@@ -228,18 +234,21 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
     cell_owned.push_back(cell->is_locally_owned());
     cell_grain_area_ratio.push_back(grain_area_ratio);
     cell_node_rest_area_m2.push_back(node_area_m2);
-    std::vector<double>& JxW = cell_JxW_m2.emplace_back();
-    std::vector<Vec2>& grad_grain =
-        cell_grad_grain.emplace_back(quadrature.size() * n_nodes_per_cell);
     for (unsigned int q = 0; q < quadrature.size(); ++q) {
-      JxW.push_back(fe_values.JxW(q));
+      JxW[q] = fe_values.JxW(q);
       for (unsigned int i = 0; i < n_local; ++i) {
         if (local_component[i] != 0) continue;
         const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
         grad_grain[q * n_nodes_per_cell + local_node[i]] = G * Vec2(g[0], g[1]);
       }
     }
+    cell_JxW_m2.push_back(JxW);
+    cell_grad_grain.push_back(grad_grain);
   }
+  cell_dofs.shrink_to_fit();
+  cell_JxW_m2.shrink_to_fit();
+  cell_grad_grain.shrink_to_fit();
+  cell_node_rest_area_m2.shrink_to_fit();
 }
 
 Vec3 PatternMesh::vertex_position(const dealii::Vector<double>& x, int unwelded) const {

@@ -15,6 +15,7 @@
 
 #include "core/backend.h"
 #include "core/constrained_directions.h"
+#include "fem/cell_table.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -43,10 +44,14 @@ class PatternMesh {
   int n_nodes() const { return static_cast<int>(node_copies.size()); }
   int n_vertices() const { return mesh.n_vertices; }
   // The cells this rank stores (see cell_dofs), and the cells of all ranks.
-  int n_cells() const { return static_cast<int>(cell_dofs.size()); }
+  int n_cells() const { return cell_dofs.size(); }
   int n_all_cells() const { return static_cast<int>(cell_vertices.size()); }
   int n_local_dofs() const { return static_cast<int>(fe.n_dofs_per_cell()); }
   int n_element_nodes() const { return n_local_dofs() / 3; }
+  // Copies stored cell k's DoFs into `dofs` (deal.II's constraints take them as a vector).
+  void get_cell_dofs(int k, std::vector<GlobalDof>& dofs) const {
+    dofs.assign(cell_dofs[k].begin(), cell_dofs[k].end());
+  }
   // Node-major index 3 a + c of a cell's local DoF i (node a, component c).
   int node_major(unsigned int i) const { return 3 * local_node[i] + local_component[i]; }
 
@@ -91,12 +96,13 @@ class PatternMesh {
   // cell's active_cell_index. Then its DoFs, whether this rank owns it, and per quadrature
   // point its JxW (layout area, m^2) and each element node's shape gradient in grain axes
   // (1/m), node-major [q * n_element_nodes + a]. They live on the reference (pattern)
-  // configuration, so they are computed once.
+  // configuration, so they are computed once. Each cell's arrays have one length, and are
+  // stored in one block per kind (cell_table.h).
   std::vector<int> cell_index;
-  std::vector<std::vector<GlobalDof>> cell_dofs;
+  CellTable<GlobalDof> cell_dofs;
   std::vector<char> cell_owned;
-  std::vector<std::vector<double>> cell_JxW_m2;
-  std::vector<std::vector<Vec2>> cell_grad_grain;
+  CellTable<double> cell_JxW_m2;
+  CellTable<Vec2> cell_grad_grain;
   // Per cell, the ratio of grain to layout area; the linear hat of each cell corner at the
   // quadrature points [q][v].
   std::vector<double> cell_grain_area_ratio;
@@ -108,7 +114,7 @@ class PatternMesh {
   // Per cell and element node, int N_a dA over the cell's rest (grain) area, m^2: the node's
   // consistent share of the cell's area (sums to the cell's rest area), which carries the
   // fabric's weight.
-  std::vector<std::vector<double>> cell_node_rest_area_m2;
+  CellTable<double> cell_node_rest_area_m2;
   // The same summed over each node's cells of all ranks (a seam node's copies together), m^2.
   const std::vector<double>& node_rest_area_m2() const { return node_rest_area_m2_; }
 

@@ -3,11 +3,12 @@
 
 #include "contact/nodal_contact.h"
 #include "contact/penalty_contact.h"
+#include "contact/residual_location.h"
 #include "contact/rigid_body.h"
+#include "core/residual_history.h"
+#include "core/tension_scale.h"
 #include "massspring/flat_panel_start.h"
 #include "massspring/lumped_mass.h"
-#include "massspring/residual_history.h"
-#include "massspring/residual_location.h"
 #include "massspring/stable_time_step.h"
 
 #include <algorithm>
@@ -51,15 +52,9 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   rest_vertex_area_m2_ = rest_vertex_areas_m2(mesh);
   constrained_ = ConstrainedDirections(problem_.constraints, n);
   size_m_ = std::sqrt(rest_area(mesh));
-  // Stop rule: a force relative to the tension scale, Y h^2 / L (h the mean
-  // rest edge, L = size_m_). A smooth error of strain amplitude e over the garment leaves about
-  // Y e h^2 / L on each vertex (the stress error's gradient Y e / L times the vertex area h^2),
-  // so this bounds the remaining strain error by about the relative tolerance on every mesh.
-  // Y h alone, the force of a strain e on one edge, lets the smooth error grow like L / h as
-  // the mesh is refined (docs/model.md, "Reaching equilibrium").
-  const double edge_m = mean_rest_edge_length_m(mesh);
-  tolerance_N_ = parameters_.relative_tolerance * problem_.law->stiffness_scale() * edge_m *
-                 (edge_m / size_m_);
+  // Stop rule: a force relative to the tension scale Y h^2 / L (core/garment.h says why).
+  tolerance_N_ =
+      parameters_.relative_tolerance * tension_scale_N(mesh, problem_.law->stiffness_scale());
   // Standard gravity, so the limit is the same with gravity on or off.
   const double weight_N = std::accumulate(mass_kg_.begin(), mass_kg_.end(), 0.0) * 9.80665;
   net_force_limit_N_ = parameters_.net_force_tolerance * weight_N;

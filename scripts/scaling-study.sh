@@ -31,6 +31,16 @@
 #   BLAS_DIR: a folder with another libblas.so.3 (e.g. OpenBLAS's), put first on
 #   LD_LIBRARY_PATH for the runs; the table's route names get a suffix "+blas".
 #   APPEND=1: add to the table of an earlier run instead of starting it afresh.
+#   STUDY (default "all"): "gamg" runs only the GAMG footprint below, "runs" only the runs above.
+#
+# The GAMG footprint: build/bench/fem_solver_footprint (CG with GAMG, falling back to GMRES with
+# GAMG at an indefinite preconditioner) from a start in contact, on FE_RANKS ranks at every
+# scale, so that neither the loose settle nor MUMPS enters. Per rank it reports the resident set
+# with MPI and PETSc started (the libraries' floor, which no distribution lowers), after the
+# garment's mesh, after the backend's setup, and its peak. Writes
+# docs/figures/scaling_gamg.csv (the largest rank's numbers), the fitted exponents of CPU time
+# and of the peak above the floor against the vertex count to docs/figures/scaling_gamg_fit.txt,
+# and docs/figures/scaling_gamg.png.
 #   PLOT_ONLY=1: no runs; fit and draw the existing table again.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -54,7 +64,7 @@ mkdir -p "$results" "$figures"
 table=$figures/scaling${suffix:+_blas}.csv
 # APPEND=1 adds rows to the table of an earlier run (a study done in parts).
 plot_only=${PLOT_ONLY:-0}
-[[ ($plot_only == 1 || ${APPEND:-0} == 1) && -f $table ]] ||
+[[ ($plot_only == 1 || ${APPEND:-0} == 1 || ${STUDY:-all} == gamg) && -f $table ]] ||
   echo "route,ranks,mesh_scale,n_vertices,first_contact_cpu_s,first_contact_iterations,next_step_cpu_s,next_step_iterations,peak_rss_MB,peak_kB_per_vertex,status" >"$table"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 
@@ -88,6 +98,68 @@ measure() {
   echo "$route,$ranks,$scale,${vertices:-},${first[0]:-},${first[1]:-},${next[0]:-},${next[1]:-},${rss:-},$per_vertex,$status" |
     tee -a "$table"
 }
+
+study=${STUDY:-all}
+gamg_table=$figures/scaling_gamg${suffix:+_blas}.csv
+footprint=${FOOTPRINT:-build/bench/fem_solver_footprint}
+# footprint RANKS SCALE: one row of the GAMG footprint table.
+footprint() {
+  local ranks=$1 scale=$2 dir=$results/gamg-footprint${suffix}_np$1_s$2
+  local launcher=("$footprint")
+  [[ $ranks -gt 1 ]] && launcher=(mpirun -np "$ranks" "$footprint")
+  echo "== GAMG footprint, $ranks rank(s), mesh scale $scale"
+  mkdir -p "$dir"
+  nice "${launcher[@]}" "$scale" cg-gamg >"$dir/run.log" 2>&1
+  local status=$?
+  # The largest rank's line: "rank R of N: V vertices, cg-gamg: resident F MB with MPI ...,
+  # M MB with the mesh, S MB after setup, peak P MB (A MB above the first); C s CPU, ..."
+  # and the step's Newton iterations.
+  local newton
+  newton=$(grep -oE '^newton [0-9]+' "$dir/run.log" | grep -oE '[0-9]+')
+  grep '^rank ' "$dir/run.log" | sed -E 's/^rank [0-9]+ of [0-9]+: ([0-9]+) vertices, [a-z-]+: resident ([0-9]+) MB with MPI and PETSc started, ([0-9]+) MB with the mesh, ([0-9]+) MB after setup, peak ([0-9]+) MB \(([0-9-]+) MB above the first\); ([0-9.]+) s CPU.*/\1 \2 \3 \4 \5 \6 \7/' |
+    sort -k5 -n | tail -1 | while read -r v floor mesh setup peak above cpu; do
+    echo "$ranks,$scale,$v,${newton:-},$cpu,$floor,$mesh,$setup,$peak,$above,$status" | tee -a "$gamg_table"
+  done
+}
+if [[ $plot_only != 1 && $study != runs ]]; then
+  [[ ${APPEND:-0} == 1 && -f $gamg_table ]] ||
+    echo "ranks,mesh_scale,n_vertices,newton_iterations,cpu_s,floor_MB,with_mesh_MB,after_setup_MB,peak_MB,peak_above_floor_MB,status" >"$gamg_table"
+  for scale in "${scales[@]}"; do
+    for ranks in $fe_ranks; do footprint "$ranks" "$scale"; done
+  done
+fi
+if [[ -f $gamg_table ]]; then
+  # Least squares of log y against log N over the meshes of 2000 vertices and more, per rank
+  # count: y the CPU time, then the peak above the floor.
+  awk -F, 'NR > 1 && $11 == 0 && $3 >= 2000 {
+             k = $1; x = log($3); n[k]++; sx[k] += x; sxx[k] += x * x;
+             t = log($5); st[k] += t; sxt[k] += x * t; m = log($10); sm[k] += m; sxm[k] += x * m }
+           END { for (k in n) if (n[k] >= 2) {
+                   d = n[k] * sxx[k] - sx[k] * sx[k];
+                   printf "GAMG footprint, %d rank(s): CPU time ~ N^%.2f, peak above the floor ~ N^%.2f (%d meshes)\n",
+                          k, (n[k] * sxt[k] - sx[k] * st[k]) / d, (n[k] * sxm[k] - sx[k] * sm[k]) / d, n[k] } }' \
+    "$gamg_table" | sort | tee "$figures/scaling_gamg${suffix:+_blas}_fit.txt"
+  if command -v gnuplot >/dev/null; then
+    gnuplot <<GNUPLOT
+set terminal pngcairo size 1200,500
+set output "$figures/scaling_gamg${suffix:+_blas}.png"
+set datafile separator ","
+set multiplot layout 1,2 title "4 5T tube from a start in contact at alpha 1.1, CG/GMRES + GAMG, the solver footprint bench"
+set logscale xy
+set xlabel "vertices"
+set grid
+set key top left
+sel(np) = sprintf("< awk -F, '\$1 == %d && \$11 == 0' $gamg_table", np)
+set ylabel "CPU time of the step [s] (rank 0)"
+plot sel(1) using 3:5 with linespoints title "1 rank", sel(2) using 3:5 with linespoints title "2 ranks"
+set ylabel "peak resident set per rank [MB]"
+plot sel(1) using 3:9 with linespoints title "1 rank, total", sel(2) using 3:9 with linespoints title "2 ranks, total (largest rank)", \
+     sel(1) using 3:10 with linespoints dashtype 2 title "1 rank, above the floor", sel(2) using 3:10 with linespoints dashtype 2 title "2 ranks, above the floor"
+unset multiplot
+GNUPLOT
+  fi
+fi
+[[ $study == gamg ]] && exit 0
 
 [[ $plot_only == 1 ]] && scales=()
 for scale in "${scales[@]}"; do

@@ -1,6 +1,6 @@
 // The stall test's windows: a residual that falls geometrically never stalls, a limit cycle
 // stalls in its second window, and a restart forgets the earlier windows.
-#include "massspring/residual_history.h"
+#include "core/residual_history.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,18 @@
-#include "massspring/residual_history.h"
+#include "core/residual_history.h"
 
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace tightfit {
 
-ResidualHistory::ResidualHistory(int window_frames, double required_fall)
-    : window_frames_(window_frames), required_fall_(required_fall) {
+ResidualHistory::ResidualHistory(int window_frames, double required_fall, std::string counter,
+                                 std::string step)
+    : window_frames_(window_frames),
+      required_fall_(required_fall),
+      counter_(std::move(counter)),
+      step_(std::move(step)) {
   if (window_frames <= 0 || !(required_fall > 0 && required_fall < 1))
     throw std::invalid_argument(
         "residual history: the window must be positive and the fall in (0, 1)");
@@ -37,11 +42,18 @@ void ResidualHistory::restart() {
 
 std::string ResidualHistory::text() const {
   std::ostringstream out;
-  out << "residual history (windows of " << window_frames_
-      << " frames: first frame, time step s, smallest / largest / last residual N)";
-  for (const Window& w : windows_)
+  out << "residual history (windows of " << window_frames_ << " " << counter_ << ": first, "
+      << step_ << ", smallest / largest / last residual N)";
+  const auto line = [&out](const Window& w) {
     out << "\n  " << w.first_frame << "  " << w.dt_s << "  " << w.smallest_N << " / " << w.largest_N
         << " / " << w.last_N << (w.stalled ? "  stalled" : "");
+  };
+  for (const Window& w : windows_) line(w);
+  // The last records, in a window not yet full: where a failed step ended.
+  if (open_frames_ > 0) {
+    line(open_);
+    out << "  (" << open_frames_ << " " << counter_ << ")";
+  }
   return out.str();
 }
 

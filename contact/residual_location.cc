@@ -1,4 +1,4 @@
-#include "massspring/residual_location.h"
+#include "contact/residual_location.h"
 
 #include <cmath>
 #include <sstream>

@@ -18,8 +18,11 @@ namespace tightfit {
 
 class ResidualHistory {
  public:
-  // `window_frames` > 0; `required_fall` in (0, 1).
-  ResidualHistory(int window_frames, double required_fall);
+  // `window_frames` > 0; `required_fall` in (0, 1). `counter` and `step` name what the
+  // windows count and what record()'s dt_s is, for text(): the defaults read RK4's frames and
+  // time step; Newton's method records iterations and its line search's step length.
+  ResidualHistory(int window_frames, double required_fall, std::string counter = "frames",
+                  std::string step = "time step s");
 
   // Records the residual (N) of frame `frame`, taken with time step `dt_s`. Returns true when
   // this frame closes a window that has stalled.
@@ -28,7 +31,8 @@ class ResidualHistory {
   // contact multiplier update or a time-step halving the residual starts afresh.
   void restart();
 
-  // One line per closed window: first frame, time step, smallest, largest and last residual.
+  // One line per window, closed ones and the one being filled: first frame, time step,
+  // smallest, largest and last residual.
   std::string text() const;
   int windows() const { return static_cast<int>(windows_.size()); }
 
@@ -41,6 +45,7 @@ class ResidualHistory {
   };
   int window_frames_;
   double required_fall_;
+  std::string counter_, step_;
   std::vector<Window> windows_;  // closed windows
   Window open_;
   int open_frames_ = 0;
