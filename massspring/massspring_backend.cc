@@ -16,6 +16,7 @@
 #include <cmath>
 #include <ctime>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -54,6 +55,9 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   // Stop rule: a force relative to the tension scale Y h^2 / L (core/garment.h says why).
   tolerance_N_ =
       parameters_.relative_tolerance * tension_scale_N(mesh, problem_.law->stiffness_scale());
+  // Standard gravity, so the limit is the same with gravity on or off.
+  const double weight_N = std::accumulate(mass_kg_.begin(), mass_kg_.end(), 0.0) * 9.80665;
+  net_force_limit_N_ = parameters_.net_force_tolerance * weight_N;
 
   // Until the caller places it, the garment lies flat in its layout plane.
   x_.assign(n, Vec3::Zero());
@@ -143,6 +147,7 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
   double largest_squared = 0.0, total_squared = 0.0;
+  Vec3 net_N = Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) {
     if (body && k > 0) force[i] += contact_force_N(i, x[i]);
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
@@ -150,10 +155,19 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     const double squared = force[i].squaredNorm();
     largest_squared = std::max(largest_squared, squared);
     total_squared += squared;  // std::max drops NaN; a sum keeps it
+    net_N += force[i];
   }
   if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
-  return parameters_.stop_norm == StopNorm::rms ? std::sqrt(total_squared / double(n))
-                                                : std::sqrt(largest_squared);
+  const double norm_N = parameters_.stop_norm == StopNorm::rms
+                            ? std::sqrt(total_squared / double(n))
+                            : std::sqrt(largest_squared);
+  if (!(net_force_limit_N_ > 0)) return norm_N;
+  // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
+  return std::max(norm_N, net_N.norm() * tolerance_N_ / net_force_limit_N_);
+}
+
+Vec3 MassSpringBackend::net_force_N(const std::vector<Vec3>& force) {
+  return std::accumulate(force.begin(), force.end(), Vec3(Vec3::Zero()));
 }
 
 void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) const {
@@ -382,6 +396,10 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     before_last_ = std::move(last_);
     last_ = Settled{step.alpha, x_, multiplier_N_};
   }
+  // The net force as the stop rule saw it: friction from the anchors the step solved with
+  // (committing them moves them onto the state and takes their force away).
+  residual_forces(x_, step.gravity_on, force_);
+  const Vec3 net_N = net_force_N(force_);
   const int slipping = commit_friction_anchors();
 
   StepReport report;
@@ -402,7 +420,10 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
            << " time step halvings), dt " << time_step_s_ << " s, damping " << damping_per_s_
            << " 1/s, residual " << residual << " N < ";
   detail << tolerance_N_ << " N" << (parameters_.stop_norm == StopNorm::rms ? " (rms)" : "")
-         << ", largest penetration " << penetration_m << " m, " << report.wall_seconds << " s ("
+         << ", net force on the garment " << net_N.norm() << " N (" << net_N.x() << ", "
+         << net_N.y() << ", " << net_N.z() << ")";
+  if (net_force_limit_N_ > 0) detail << " < " << net_force_limit_N_ << " N";
+  detail << ", largest penetration " << penetration_m << " m, " << report.wall_seconds << " s ("
          << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
   if (halvings > 0) detail << "; " << history.text();
   report.detail = detail.str();

@@ -58,9 +58,15 @@ class MassSpringBackend final : public Backend {
 
   // Residual force on every particle (internal + contact + gravity when on, held components
   // removed) into `force`; returns the size the stop rule reads (Stop norm: the largest
-  // magnitude or the root mean square), N (NaN when one is not finite).
+  // magnitude or the root mean square), N (NaN when one is not finite). With a Net force
+  // tolerance, the net force's share of it: max(norm, |sum f| x tolerance / net limit), so
+  // one comparison with the tolerance asks both.
   double residual_forces(const std::vector<Vec3>& x, bool gravity_on,
                          std::vector<Vec3>& force) const;
+  // The net force on the garment (the sum of `force`), N, and the limit the stop rule puts on
+  // its size (Net force tolerance times the garment's weight; 0 when off), N.
+  static Vec3 net_force_N(const std::vector<Vec3>& force);
+  double net_force_limit_N() const { return net_force_limit_N_; }
   // The residual's stiffness K = -d(residual)/dx at `x` (N/m, 3n x 3n, symmetric): the
   // triangles' exact stiffness, the hinges' Gauss-Newton one, each contact's and, at a held
   // vertex, the held directions projected out (and a unit diagonal put in their place).
@@ -93,7 +99,8 @@ class MassSpringBackend final : public Backend {
   std::vector<double> rest_vertex_area_m2_;
   ConstrainedDirections constrained_;
   double tolerance_N_ = 0.0;
-  double size_m_ = 0.0;  // the garment's rest size, sqrt(rest area)
+  double net_force_limit_N_ = 0.0;  // 0: the stop rule does not read the net force
+  double size_m_ = 0.0;             // the garment's rest size, sqrt(rest area)
   double time_step_s_ = 0.0;
   double damping_per_s_ = 0.0;
 

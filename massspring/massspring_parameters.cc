@@ -64,6 +64,14 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "'rms': the root mean square over the vertices, sqrt(sum |f|^2 / n), for a "
                     "garment on a faceted body mesh where a few vertices chatter in a limit "
                     "cycle the largest residual never leaves (docs/dressing.md).");
+  prm.declare_entry("Net force tolerance", text(d.net_force_tolerance), Double(0.0, 1e6),
+                    "Stop rule on the garment as a whole, dimensionless: above 0, a state is "
+                    "stable only when the net force on the garment (the sum of the residual "
+                    "forces: what the body, friction and gravity leave unbalanced) is also "
+                    "below this times the garment's weight (its mass times 9.80665 m/s^2, "
+                    "whether gravity acts or not). The rms stop norm alone accepts a garment "
+                    "still sliding over the body: a net force F spread over n vertices adds "
+                    "only F / n to each (docs/dressing.md). 0 = off.");
   prm.declare_entry("Maximum frames", text(d.maximum_frames), Integer(1, 2000000000),
                     "Guard against non-convergence, frames: a load step that has not met the "
                     "stop rule by then fails with an error naming the step and residual.");
@@ -124,6 +132,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   quasi_static_frames = prm.get_integer("Quasi-static frames");
   relative_tolerance = prm.get_double("Relative tolerance");
   stop_norm = prm.get("Stop norm") == "rms" ? StopNorm::rms : StopNorm::largest;
+  net_force_tolerance = prm.get_double("Net force tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
   stall_window_frames = prm.get_integer("Stall window");
   stall_fall = prm.get_double("Stall residual fall");

@@ -62,6 +62,12 @@ struct MassSpringParameters {
   double relative_tolerance = 1e-4;
   // The residual's size the stop rule and the stall test read.
   StopNorm stop_norm = StopNorm::largest;
+  // Stop rule on the garment as a whole: above 0, a state is stable only when the net force on
+  // the garment (the sum of the residuals: what the body, friction and gravity leave
+  // unbalanced) is also below this times the garment's weight (its mass times standard
+  // gravity). The rms rule alone accepts a garment still sliding over the body: a net force F
+  // spread over n vertices adds only F / n to each. 0: off.
+  double net_force_tolerance = 0.0;
   // Guard against non-convergence: a load step that has not met the stop rule after this
   // many frames fails with an error.
   int maximum_frames = 200000;

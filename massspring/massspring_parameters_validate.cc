@@ -17,6 +17,7 @@ void MassSpringParameters::validate() const {
   require(quasi_static_frames >= 0, "Quasi-static frames", "must be >= 0");
   require(relative_tolerance > 0 && relative_tolerance < 1, "Relative tolerance",
           "must be in (0, 1)");
+  require(net_force_tolerance >= 0, "Net force tolerance", "must be >= 0 (0 = off)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
   require(maximum_newton_iterations > 0, "Maximum Newton iterations", "must be positive");
   require(stall_window_frames > 0, "Stall window", "must be positive (frames)");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace tightfit::pattern {
 
@@ -158,11 +159,7 @@ std::vector<EdgeDivision::OutlinePoint> EdgeDivision::outline_index(int panel) c
 }
 
 void EdgeDivision::add_split(int panel, int edge, int index, double along) {
-  auto fraction_at = [&](int p, int e, int k, double t) {
-    const auto& f = fractions_[p][e];
-    return f[k] + t * (f[k + 1] - f[k]);
-  };
-  pending_.push_back({panel, edge, fraction_at(panel, edge, index, along)});
+  pending_.push_back({panel, edge, index, along});
   // The same chord of the seam's other side, counted along the walk.
   for (const SeamIndices& seam : seams_)
     for (int s = 0; s < 2; ++s) {
@@ -181,8 +178,7 @@ void EdgeDivision::add_split(int panel, int edge, int index, double along) {
         const int n = static_cast<int>(fractions_[other.panel][e].size()) - 1;
         if (chord < n) {
           const int k = other.reversed ? n - 1 - chord : chord;
-          pending_.push_back(
-              {other.panel, e, fraction_at(other.panel, e, k, other.reversed ? 1.0 - t : t)});
+          pending_.push_back({other.panel, e, k, other.reversed ? 1.0 - t : t});
           return;
         }
         chord -= n;
@@ -191,11 +187,45 @@ void EdgeDivision::add_split(int panel, int edge, int index, double along) {
 }
 
 bool EdgeDivision::apply_splits() {
-  bool changed = false;
+  // Points closer than this (a fraction of their chord) are one point: the mesher splits the
+  // two sides of a seam on its own, and where they are not alike (a dart's legs, two curves
+  // of one length meeting at the tip at 42 degrees) it puts the points round the tip at equal
+  // distances from it, the copies of which land at equal arc lengths on the other leg, a
+  // little apart; kept apart, each round splits the sliver between them again and the
+  // outline grows without end. Merged at their mean along the chord, on both sides alike (a
+  // copy keeps its chord's parameter, or 1 minus it: the gaps, and so the merging, are the
+  // same on both sides).
+  constexpr double merge_along = 0.2;
+  std::sort(pending_.begin(), pending_.end(), [](const Split& a, const Split& b) {
+    return std::tie(a.panel, a.edge, a.chord, a.along) <
+           std::tie(b.panel, b.edge, b.chord, b.along);
+  });
+  std::vector<Split> merged;
+  std::size_t count = 0;
+  double last_along = 0.0;  // the point before, along the same chord when it joins
   for (const Split& s : pending_) {
-    auto& f = fractions_[s.panel][s.edge];
+    const bool joins = count > 0 && merged.back().panel == s.panel &&
+                       merged.back().edge == s.edge && merged.back().chord == s.chord &&
+                       s.along - last_along < merge_along;
+    if (joins) {
+      merged.back().along += (s.along - merged.back().along) / double(++count);
+    } else {
+      merged.push_back(s);
+      count = 1;
+    }
+    last_along = s.along;
+  }
+  // Fractions from the chords as they were before this round's points go in.
+  std::vector<std::pair<std::pair<int, int>, double>> points;
+  for (const Split& s : merged) {
+    const auto& f = fractions_[s.panel][s.edge];
+    points.push_back({{s.panel, s.edge}, f[s.chord] + s.along * (f[s.chord + 1] - f[s.chord])});
+  }
+  bool changed = false;
+  for (const auto& [where, fraction] : points) {
+    auto& f = fractions_[where.first][where.second];
     const std::size_t before = f.size();
-    insert_sorted(f, s.fraction);
+    insert_sorted(f, fraction);
     changed = changed || f.size() != before;
   }
   pending_.clear();

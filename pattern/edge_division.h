@@ -54,9 +54,10 @@ class EdgeDivision {
   std::vector<std::vector<double>> edge_length_m_;        // [panel][edge]
   std::vector<std::vector<std::vector<double>>> joints_;  // segment joints, fractions
   std::vector<std::vector<std::vector<double>>> fractions_;
+  // A point the mesher added (or its copy): `along` chord `chord` of the edge, 0 to 1.
   struct Split {
-    int panel, edge;
-    double fraction;
+    int panel, edge, chord;
+    double along;
   };
   std::vector<Split> pending_;
 };
