@@ -234,7 +234,8 @@ TEST(CylinderContact, PressureDoesNotDependOnThePenalty) {
   EXPECT_NEAR(means[2] / means[1], 1.0, 1e-6);
 }
 
-// A step that cannot converge stops with a message naming the step and the residual.
+// A step that cannot converge stops with a message naming the step, the residual, where the
+// largest residual sits and its history.
 TEST(CylinderFailure, NewtonFailureNamesTheStepAndResidual) {
   TubeCase tube("neo hookean", EndCondition::free_ends, MeshSpacing{0.03, 0.06});
   FemParameters parameters;
@@ -249,7 +250,10 @@ TEST(CylinderFailure, NewtonFailureNamesTheStepAndResidual) {
     const std::string what = e.what();
     EXPECT_NE(what.find("load step 7"), std::string::npos) << what;
     EXPECT_NE(what.find("alpha 1.8"), std::string::npos) << what;
-    EXPECT_NE(what.find("residual"), std::string::npos) << what;
+    // Where the largest residual sits and the residual's history (iterations 0 and 1).
+    EXPECT_NE(what.find("largest residual"), std::string::npos) << what;
+    EXPECT_NE(what.find("residual history"), std::string::npos) << what;
+    EXPECT_NE(what.find("(2 Newton iterations)"), std::string::npos) << what;
   }
 }
 
