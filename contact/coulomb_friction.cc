@@ -6,7 +6,8 @@ namespace tightfit {
 
 FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const SurfacePoint& at_x,
                                   double normal_force_N, const Vec3& dN_dx,
-                                  const SurfaceLocation& anchor, const CoulombFrictionLaw& law) {
+                                  const SurfaceLocation& anchor, const CoulombFrictionLaw& law,
+                                  NearFaces* near) {
   if (!(law.friction_coefficient >= 0))
     throw std::invalid_argument("Friction/Coefficient: must not be negative");
   if (!(law.tangential_penalty_N_per_m > 0))
@@ -46,7 +47,7 @@ FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const Su
   // moved the anchor far more than mu N / k, so that the committed anchor no longer gave the
   // force of the accepted state.
   const Vec3 slid = at_x.closest_point_m - (limit / k) * s;
-  r.anchor = body.query(slid).location;
+  r.anchor = (near ? body.query_near(slid, *near) : body.query(slid)).location;
   return r;
 }
 

@@ -38,9 +38,11 @@ struct FrictionResponse {
 // `at_x` is body.query(x_m) (its normal, dn/dx and location); `normal_force_N` is N >= 0 and
 // `normal_force_gradient_N_per_m` dN/dx (nodal_contact.h: -kA dg/dx while in contact). A vertex
 // out of contact (N = 0) feels no friction and its anchor resets to its closest point.
-// Throws std::invalid_argument for mu < 0 or k_t <= 0.
+// Throws std::invalid_argument for mu < 0 or k_t <= 0. `near` (if given) is x's own
+// RigidBody::query_near memory, for the query that places a slipping anchor near x.
 FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x_m, const SurfacePoint& at_x,
                                   double normal_force_N, const Vec3& normal_force_gradient_N_per_m,
-                                  const SurfaceLocation& anchor, const CoulombFrictionLaw& law);
+                                  const SurfaceLocation& anchor, const CoulombFrictionLaw& law,
+                                  NearFaces* near = nullptr);
 
 }  // namespace tightfit

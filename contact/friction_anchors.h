@@ -32,9 +32,11 @@ class FrictionAnchors {
   void place(const RigidBody& body, const std::vector<Vec3>& positions_m);
   // The return mapping for vertex i at x (`at_x` = body.query(x)) under normal force N with
   // gradient dN/dx (Vec3::Zero() when only the force is wanted).
+  // `near`: x's RigidBody::query_near memory, if kept (coulomb_friction).
   FrictionResponse response(int vertex, const RigidBody& body, const Vec3& x_m,
                             const SurfacePoint& at_x, double normal_force_N,
-                            const Vec3& normal_force_gradient_N_per_m = Vec3::Zero()) const;
+                            const Vec3& normal_force_gradient_N_per_m = Vec3::Zero(),
+                            NearFaces* near = nullptr) const;
   // Keeps the anchor of an accepted state: `response` must be that state's.
   void commit(int vertex, const FrictionResponse& accepted) { anchor_[vertex] = accepted.anchor; }
   // k_t of vertex i, N/m (its contribution to the stiffest vertex of the explicit time step).

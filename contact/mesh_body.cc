@@ -4,6 +4,7 @@
 #include "contact/polygon_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -29,6 +30,13 @@ Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
 // the pseudo-normal of any feature that holds the closest point signs correctly, so the
 // tolerance only has to be above round-off; smaller keeps the face's derivative nearer an edge.
 constexpr double on_feature_tolerance = 1e-12;
+
+// How far a point may move before its near faces are found again, over the mesh's mean edge
+// length: the faces kept are those within d + 2 r of where they were found (d the distance
+// there), a few faces for a point on the surface.
+constexpr double near_reach_fraction = 0.1;
+
+std::atomic<std::uint64_t> shapes_made{0};
 
 }  // namespace
 
@@ -90,6 +98,11 @@ void MeshBody::update_geometry() {
   for (Vec3& n : vertex_normals_)
     if (n.norm() > 0) n.normalize();
   bvh_.build(v, surface_.triangles);
+  shape_id_ = ++shapes_made;
+  double edges_m = 0.0;
+  for (const Triangle& t : surface_.triangles)
+    for (int k = 0; k < 3; ++k) edges_m += (v[t[(k + 1) % 3]] - v[t[k]]).norm();
+  near_reach_m_ = near_reach_fraction * edges_m / (3.0 * double(surface_.triangles.size()));
   if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth)
     field_.build(v, surface_.triangles, vertex_normals_);
 }
@@ -105,7 +118,24 @@ Vec3 MeshBody::interpolated_normal(int triangle, const Vec3& b, double* length) 
 }
 
 SurfacePoint MeshBody::query(const Vec3& x) const {
-  SurfacePoint s = faceted_query(x);
+  return finished(x, faceted_query(x));
+}
+
+SurfacePoint MeshBody::query_near(const Vec3& x, NearFaces& near) const {
+  if (near.shape == shape_id_ && (x - near.centre_m).norm() <= near.reach_m)
+    return finished(x, faceted_answer(x, bvh_.closest_among(x, near.faces)));
+  // For x within r of the centre c, whose closest face is at d from c: x's closest face is no
+  // farther from x than c's, d + r, so it lies within d + 2 r of c. (A nanometre more for
+  // round-off.)
+  const TriangleBvh::Hit hit = bvh_.closest(x);
+  near.centre_m = x;
+  near.reach_m = near_reach_m_;
+  near.shape = shape_id_;
+  bvh_.within(x, (x - hit.point_m).norm() + 2.0 * near_reach_m_ + 1e-9, near.faces);
+  return finished(x, faceted_answer(x, hit));
+}
+
+SurfacePoint MeshBody::finished(const Vec3& x, SurfacePoint s) const {
   if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth) {
     smooth_query(x, s);  // the closest point on the skin's level set
     s.location = smooth_location(s.closest_point_m, s.location.face);
@@ -117,8 +147,7 @@ SurfacePoint MeshBody::query(const Vec3& x) const {
   return s;
 }
 
-SurfacePoint MeshBody::faceted_query(const Vec3& x) const {
-  const TriangleBvh::Hit hit = bvh_.closest(x);
+SurfacePoint MeshBody::faceted_answer(const Vec3& x, const TriangleBvh::Hit& hit) const {
   const int t = hit.triangle;
   const Triangle& tri = surface_.triangles[t];
   const auto& v = surface_.vertices_m;

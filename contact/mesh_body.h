@@ -45,6 +45,10 @@ class MeshBody final : public RigidBody {
   // outward normal is the vertex normals interpolated with the closest point's barycentric
   // coordinates, which the location holds (face = triangle, coordinates = (b0, b1, b2)).
   SurfacePoint query(const Vec3& x) const override;
+  // query(x) from the faces kept in `near`: a point that moved no farther than their reach
+  // from where they were found has its closest point on one of them (below), so only those
+  // are searched; beyond the reach, or on a new shape, the tree finds them again.
+  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override;
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 
@@ -62,7 +66,11 @@ class MeshBody final : public RigidBody {
  private:
   void update_geometry();
   Vec3 interpolated_normal(int triangle, const Vec3& barycentric, double* length = nullptr) const;
-  SurfacePoint faceted_query(const Vec3& x) const;
+  SurfacePoint faceted_query(const Vec3& x) const { return faceted_answer(x, bvh_.closest(x)); }
+  // The faceted answer at x whose closest point of the flat faces is `hit`.
+  SurfacePoint faceted_answer(const Vec3& x, const TriangleBvh::Hit& hit) const;
+  // The contact surface's answer (the skin, or the smooth field) from the faceted one.
+  SurfacePoint finished(const Vec3& x, SurfacePoint faceted) const;
   // Replaces the faceted answer's distance, normal and derivatives by the smooth field's where
   // the field covers x (blended back to the faceted ones as its weights fade, far off the
   // surface), with the closest point on the smooth surface moved out by the skin (the level
@@ -87,6 +95,10 @@ class MeshBody final : public RigidBody {
   std::vector<Vec3> vertex_normals_;
   std::vector<std::array<int, 3>> neighbours_;  // across edge k (corners k, k+1); -1 on a border
   TriangleBvh bvh_;
+  // This shape's number, unique in the process (NearFaces::shape), and how far a point may
+  // move before its near faces are found again, m (a tenth of the mean edge length).
+  std::uint64_t shape_id_ = 0;
+  double near_reach_m_ = 0.0;
 };
 
 // Reads (read_polygon_mesh), imports (import_surface) and checks a body mesh file.

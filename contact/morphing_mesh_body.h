@@ -27,6 +27,9 @@ class MorphingMeshBody final : public RigidBody {
 
   std::string name() const override { return "morphing mesh"; }
   SurfacePoint query(const Vec3& x) const override { return mesh_.query(x); }
+  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override {
+    return mesh_.query_near(x, near);
+  }
   DisplayMesh display_mesh() const override { return mesh_.display_mesh(); }
   Vec3 surface_point_m(const SurfaceLocation& l) const override { return mesh_.surface_point_m(l); }
 

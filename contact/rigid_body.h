@@ -4,6 +4,7 @@
 
 #include "core/types.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,15 @@ struct SurfacePoint {
   SurfaceLocation location;  // the closest point on the body's own surface
 };
 
+// What a body keeps for one moving point between its queries (RigidBody::query_near): a mesh
+// body's faces that can hold the closest point of every x within `reach_m` of `centre_m`.
+struct NearFaces {
+  Vec3 centre_m = Vec3::Zero();
+  double reach_m = -1.0;    // negative: nothing kept yet
+  std::uint64_t shape = 0;  // the body's shape the faces were found on (MeshBody::shape_id)
+  std::vector<int> faces;
+};
+
 // A triangulated surface for drawing the body (ParaView output); not used for contact.
 struct DisplayMesh {
   std::vector<Vec3> vertices_m;
@@ -45,6 +55,13 @@ class RigidBody {
   virtual ~RigidBody() = default;
   virtual std::string name() const = 0;
   virtual SurfacePoint query(const Vec3& x) const = 0;
+  // query(x) for a point that moves a little between its queries (a garment vertex, frame
+  // after frame): the same answer, found faster by a body that keeps something of the last
+  // query in `near` (a mesh body: the few faces near the point). Analytic bodies ask query().
+  virtual SurfacePoint query_near(const Vec3& x, NearFaces& near) const {
+    (void)near;
+    return query(x);
+  }
   virtual DisplayMesh display_mesh() const = 0;
   // Where a SurfaceLocation found by query() is now: after the body grew or morphed it is the
   // same point of the body's surface, carried with it.

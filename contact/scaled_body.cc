@@ -26,21 +26,32 @@ Vec3 ScaledBody::scaled(const Vec3& y) const {
   return centre_m_ + axial + scale_ * (d - axial);
 }
 
-SurfacePoint ScaledBody::query(const Vec3& x) const {
+Vec3 ScaledBody::unscaled(const Vec3& x) const {
   const Vec3 d = x - centre_m_;
   const Vec3 axial = along_ * d;
-  SurfacePoint s = body_.query(centre_m_ + axial + (d - axial) / scale_);
-  const auto carried = [&](const Vec3& n) {  // T^-T n
+  return centre_m_ + axial + (d - axial) / scale_;
+}
+
+SurfacePoint ScaledBody::carried(SurfacePoint s) const {
+  const auto carried_normal = [&](const Vec3& n) {  // T^-T n
     const Vec3 n_axial = along_ * n;
     return Vec3(n_axial + (n - n_axial) / scale_);
   };
-  const Vec3 m = carried(s.outward_normal);
+  const Vec3 m = carried_normal(s.outward_normal);
   s.signed_distance_m /= m.norm();
   s.outward_normal = m.normalized();
-  s.gap_gradient = carried(s.gap_gradient).normalized();
+  s.gap_gradient = carried_normal(s.gap_gradient).normalized();
   s.closest_point_m = scaled(s.closest_point_m);
   s.normal_derivative_per_m /= scale_;
   return s;
+}
+
+SurfacePoint ScaledBody::query(const Vec3& x) const {
+  return carried(body_.query(unscaled(x)));
+}
+
+SurfacePoint ScaledBody::query_near(const Vec3& x, NearFaces& near) const {
+  return carried(body_.query_near(unscaled(x), near));
 }
 
 DisplayMesh ScaledBody::display_mesh() const {

@@ -27,11 +27,16 @@ class ScaledBody final : public RigidBody {
 
   std::string name() const override { return body_.name() + " (scaled)"; }
   SurfacePoint query(const Vec3& x) const override;
+  // The body's own query_near at the point mapped back: `near` is kept in the body's own frame.
+  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override;
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 
  private:
-  Vec3 scaled(const Vec3& y) const;  // T(y)
+  Vec3 scaled(const Vec3& y) const;    // T(y)
+  Vec3 unscaled(const Vec3& x) const;  // T^-1(x)
+  // The body's answer at T^-1(x) carried over to x.
+  SurfacePoint carried(SurfacePoint s) const;
 
   const RigidBody& body_;
   Vec3 centre_m_;

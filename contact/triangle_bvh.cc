@@ -5,6 +5,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <iterator>
+#include <limits>
+
 namespace tightfit {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -40,6 +43,38 @@ TriangleBvh::Hit TriangleBvh::closest(const Vec3& x) const {
   Hit hit;
   hit.triangle = static_cast<int>(found.second - tree_->triangles.cbegin());
   hit.point_m = Vec3(found.first.x(), found.first.y(), found.first.z());
+  return hit;
+}
+
+void TriangleBvh::within(const Vec3& x, double radius_m, std::vector<int>& out) const {
+  out.clear();
+  // The box round the ball first (the tree's boxes), then each triangle's own distance.
+  const CGAL::Bbox_3 box(x.x() - radius_m, x.y() - radius_m, x.z() - radius_m, x.x() + radius_m,
+                         x.y() + radius_m, x.z() + radius_m);
+  std::vector<AabbTree::Primitive_id> found;
+  tree_->tree.all_intersected_primitives(box, std::back_inserter(found));
+  const Kernel::Point_3 p(x.x(), x.y(), x.z());
+  const auto project = Kernel().construct_projected_point_3_object();
+  for (const auto& id : found)
+    if (CGAL::squared_distance(project(*id, p), p) <= radius_m * radius_m)
+      out.push_back(static_cast<int>(id - tree_->triangles.cbegin()));
+}
+
+TriangleBvh::Hit TriangleBvh::closest_among(const Vec3& x,
+                                            const std::vector<int>& triangles) const {
+  const Kernel::Point_3 p(x.x(), x.y(), x.z());
+  const auto project = Kernel().construct_projected_point_3_object();
+  Hit hit;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const int t : triangles) {
+    const Kernel::Point_3 q = project(tree_->triangles[t], p);
+    const double squared = CGAL::squared_distance(q, p);
+    if (squared < nearest) {
+      nearest = squared;
+      hit.triangle = t;
+      hit.point_m = Vec3(q.x(), q.y(), q.z());
+    }
+  }
   return hit;
 }
 

@@ -25,6 +25,11 @@ class TriangleBvh {
     Vec3 point_m = Vec3::Zero();  // the closest point of that triangle
   };
   Hit closest(const Vec3& x_m) const;
+  // The triangles whose closest point to x lies within `radius_m` of it, into `out` (cleared).
+  void within(const Vec3& x_m, double radius_m, std::vector<int>& out) const;
+  // The closest point among `triangles` alone (not empty): the same projection as closest(),
+  // so that a list holding closest()'s triangle gives its answer.
+  Hit closest_among(const Vec3& x_m, const std::vector<int>& triangles) const;
 
  private:
   struct Tree;

@@ -70,6 +70,9 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   friction_ = FrictionAnchors(problem_.friction_coefficient, problem_.tangential_stiffness_Pa_per_m,
                               rest_vertex_area_m2_);
   force_.assign(n, Vec3::Zero());
+  near_.assign(n, NearFaces{});
+  asked_at_m_.assign(n, Vec3::Zero());
+  clearance_m_.assign(n, 0.0);
   if (parameters_.placement == Placement::flat_panels)
     flat_start_ = std::make_unique<FlatPanelStart>(problem_, parameters_);
 }
@@ -102,13 +105,21 @@ void MassSpringBackend::predict(double alpha) {
 }
 
 Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slipping) const {
-  const SurfacePoint s = problem_.body->query(x);
-  const double lambda_N = contact_multiplier_N(
-      multiplier_N_[i], problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i],
-      s.signed_distance_m);
+  const double penalty_N_per_m = problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
+  // lambda = m - k A g is zero for g > m / (k A), and g >= g_asked - |x - x_asked| (a distance
+  // changes no faster than the point moves). Half of that margin is used: a smooth contact
+  // surface's field (docs/bodies.md) is a distance only to within its blending.
+  if ((x - asked_at_m_[i]).norm() < 0.5 * (clearance_m_[i] - multiplier_N_[i] / penalty_N_per_m))
+    return Vec3::Zero();
+  const SurfacePoint s = problem_.body->query_near(x, near_[i]);
+  asked_at_m_[i] = x;
+  clearance_m_[i] = s.signed_distance_m;
+  const double lambda_N =
+      contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, s.signed_distance_m);
   Vec3 f = lambda_N * s.outward_normal;
   if (friction_.active() && lambda_N > 0.0) {
-    const FrictionResponse r = friction_.response(int(i), *problem_.body, x, s, lambda_N);
+    const FrictionResponse r =
+        friction_.response(int(i), *problem_.body, x, s, lambda_N, Vec3::Zero(), &near_[i]);
     f += r.force_N;
     if (slipping) *slipping = r.slipping;
   }
@@ -271,6 +282,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   if (problem_.body && friction_.active() && !friction_.placed())
     friction_.place(*problem_.body, x_);
 
+  // The body may have changed since the last step (a morph, a growth): nothing of its last
+  // queries is known to hold.
+  std::fill(clearance_m_.begin(), clearance_m_.end(), 0.0);
   const bool implicit = parameters_.integrator == Integrator::implicit;
   if (implicit) predict(step.alpha);
   time_step_s_ = choose_time_step_s();

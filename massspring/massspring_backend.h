@@ -132,6 +132,14 @@ class MassSpringBackend final : public Backend {
   void predict(double alpha);
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
+  // Contact queries (contact_force_N), kept per particle between the frames of a step: the
+  // body's near faces (RigidBody::query_near), and where the particle was last asked and its
+  // signed distance there. The distance changes no faster than the point moves, so while a
+  // particle stays within half that distance (less its multiplier's reach) of where it was
+  // asked, it feels no contact force and its queries are skipped.
+  mutable std::vector<NearFaces> near_;
+  mutable std::vector<Vec3> asked_at_m_;
+  mutable std::vector<double> clearance_m_;
 };
 
 }  // namespace tightfit

@@ -43,6 +43,7 @@ OpenSeamGarment::OpenSeamGarment(const Problem& problem, const MassSpringParamet
   for (auto* buffer : {&x_, &v_, &asked_at_m_})
     buffer->assign(panels_.mesh.n_vertices, Vec3::Zero());
   clearance_m_.assign(panels_.mesh.n_vertices, 0.0);
+  near_.assign(panels_.mesh.n_vertices, NearFaces{});
 }
 
 void OpenSeamGarment::set_body(const RigidBody* body) {
@@ -67,7 +68,7 @@ void OpenSeamGarment::forces(const std::vector<Vec3>& x, bool gravity_on,
   const double k = problem_.contact_stiffness_Pa_per_m;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (body_ && k > 0 && !((x[i] - asked_at_m_[i]).norm() < clearance_m_[i])) {
-      const SurfacePoint s = body_->query(x[i]);
+      const SurfacePoint s = body_->query_near(x[i], near_[i]);
       asked_at_m_[i] = x[i];
       clearance_m_[i] = clearance_factor_ * s.signed_distance_m;
       force[i] += penalty_force_N(s, k, rest_vertex_area_m2_[i]);

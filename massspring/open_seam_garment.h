@@ -6,6 +6,7 @@
 // the dressing of a body, Dressing) drive it.
 #pragma once
 
+#include "contact/rigid_body.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
 #include "massspring/bending_hinges.h"
@@ -83,6 +84,8 @@ class OpenSeamGarment {
   // which spares the costly searches of a mesh body far from the garment.
   mutable std::vector<Vec3> asked_at_m_;
   mutable std::vector<double> clearance_m_;
+  // The body's near faces of each particle (RigidBody::query_near).
+  mutable std::vector<NearFaces> near_;
   double clearance_factor_ = 1.0;
 };
 
