@@ -3,13 +3,15 @@
 // an iterative solver never falls back to MUMPS (the loose tube's singular tangent defeats it,
 // docs/performance.md) and the resident set is the solver's own. Runs under mpirun too.
 //
-// Usage: [mpirun -np N] fem_solver_footprint SCALE SOLVER [ALPHA]
+// Usage: [mpirun -np N] fem_solver_footprint SCALE SOLVER [ALPHA [MEMORY]]
 //   SCALE: the mesh spacing as a fraction of the paper's coarse mesh (0.8 cm round, 2.2 cm
 //   along; 0.073 gives about 97000 vertices); SOLVER: a `Finite elements/Linear solver` name;
-//   ALPHA: the cylinder's radius over the tube's (default 1.1).
+//   ALPHA: the cylinder's radius over the tube's (default 1.1); MEMORY: a `Finite
+//   elements/Iterative solver memory` name (default fast).
 // Prints, per rank, the resident set with MPI and PETSc started (the libraries' floor, which no
-// distribution lowers), after the garment's mesh is built, after the backend's setup, and the
-// peak over the run (MB), and the step's Newton and Krylov iterations, wall and CPU time.
+// distribution lowers), after the garment's mesh is built, after the backend's setup, the peak
+// up to then (the setup's, with the deal.II triangulation it frees) and the peak over the run
+// (MB), and the step's Newton and Krylov iterations, wall and CPU time.
 #include "../tests/fem/tube_problem.h"
 #include "fem/fem_backend.h"
 
@@ -47,15 +49,15 @@ double peak_resident_MB() {
 
 int main(int argc, char** argv) {
   using namespace tightfit;
-  if (argc != 3 && argc != 4) {
-    std::fprintf(stderr, "usage: fem_solver_footprint SCALE SOLVER [ALPHA]\n");
+  if (argc < 3 || argc > 5) {
+    std::fprintf(stderr, "usage: fem_solver_footprint SCALE SOLVER [ALPHA [MEMORY]]\n");
     return 2;
   }
   // MPI and PETSc first, so that the floor is measured before any garment data exists.
   dealii::Utilities::MPI::MPI_InitFinalize runtime(argc, argv, 1);
   const double floor_MB = resident_MB();
   const double scale = std::stod(argv[1]);
-  const double alpha = argc == 4 ? std::stod(argv[3]) : 1.1;
+  const double alpha = argc >= 4 ? std::stod(argv[3]) : 1.1;
   FemParameters parameters;
   bool known = false;
   for (const LinearSolverKind kind :
@@ -65,8 +67,14 @@ int main(int argc, char** argv) {
       parameters.linear_solver = kind;
       known = true;
     }
+  const std::string memory = argc == 5 ? argv[4] : "fast";
+  if (memory == to_string(IterativeSolverMemory::lean))
+    parameters.iterative_solver_memory = IterativeSolverMemory::lean;
+  else if (memory != to_string(IterativeSolverMemory::fast))
+    known = false;
   if (!known || !(scale > 0.0) || !(alpha > 1.0)) {
-    std::fprintf(stderr, "fem_solver_footprint: bad solver '%s', scale or alpha\n", argv[2]);
+    std::fprintf(stderr, "fem_solver_footprint: bad solver '%s', scale, alpha or memory\n",
+                 argv[2]);
     return 2;
   }
   testing::TubeCase tube("st venant kirchhoff", EndCondition::free_ends,
@@ -79,6 +87,7 @@ int main(int argc, char** argv) {
   tube.grow_to(alpha);
   backend.set_positions(tube.placed(alpha * tube.rest_radius_m));
   const double setup_MB = resident_MB();
+  const double setup_peak_MB = peak_resident_MB();
   const std::clock_t cpu_start = std::clock();
   const StepReport report = backend.solve({0, alpha, false});
   const double cpu_s = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -89,9 +98,10 @@ int main(int argc, char** argv) {
       std::printf(
           "rank %d of %d: %d vertices, %s: resident %.0f MB with MPI and PETSc started, "
           "%.0f MB with the mesh, %.0f MB after setup, peak %.0f MB (%.0f MB above the "
-          "first); %.1f s CPU, p_mean %.10f Pa\n",
+          "first); %.1f s CPU, p_mean %.10f Pa; setup peak %.0f MB; memory %s\n",
           rank, n_ranks, tube.mesh.n_vertices, argv[2], floor_MB, mesh_MB, setup_MB,
-          peak_resident_MB(), peak_resident_MB() - floor_MB, cpu_s, mean_Pa);
+          peak_resident_MB(), peak_resident_MB() - floor_MB, cpu_s, mean_Pa, setup_peak_MB,
+          memory.c_str());
     std::fflush(stdout);
   }
   if (rank == 0) std::printf("%s\n", report.detail.c_str());

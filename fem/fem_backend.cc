@@ -11,6 +11,7 @@
 #include "fem/membrane_assembly.h"
 #include "fem/newton_solver.h"
 #include "fem/pattern_mesh.h"
+#include "fem/petsc_linear_solver.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -176,6 +177,7 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
 
 FemBackend::FemBackend(const Problem& problem, const FemParameters& parameters) {
   start_mpi_and_petsc();
+  select_iterative_solver_memory(parameters.iterative_solver_memory);
   impl_ = std::make_unique<Implementation>(problem, parameters);
 }
 

@@ -44,6 +44,16 @@ const char* to_string(SlackTreatment treatment) {
   return "unknown";
 }
 
+const char* to_string(IterativeSolverMemory memory) {
+  switch (memory) {
+    case IterativeSolverMemory::fast:
+      return "fast";
+    case IterativeSolverMemory::lean:
+      return "lean";
+  }
+  return "unknown";
+}
+
 void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
@@ -70,6 +80,13 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "it switches to GMRES, and GMRES to MUMPS, noted in the step's log line. PETSc "
                     "options with the prefix fem_ tune every one "
                     "of them (-fem_pc_type, -fem_mat_mumps_icntl_14, ...).");
+  prm.declare_entry(
+      "Iterative solver memory", to_string(d.iterative_solver_memory), Selection("fast|lean"),
+      "What the Krylov solvers trade. 'fast': PETSc's defaults. 'lean': GAMG forms each coarse "
+      "operator P^T A P all at once, never storing A P, and GMRES restarts after 30 iterations "
+      "instead of 100; on the 33088-vertex tube this lowers the peak memory above the "
+      "libraries' by about a quarter on 1 and on 2 ranks, for two to three times the CPU time "
+      "(docs/performance.md, 'Memory per rank with GAMG'). Unused by 'direct'.");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
                     "Krylov solvers stop when the residual falls below eta times the right-hand "
                     "side, eta = 0.9 (|R_k|/|R_k-1|)^2 clamped to [this value, 1e-2] (inexact "
@@ -160,6 +177,14 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
     linear_solver = LinearSolverKind::gmres_gamg;
   else
     throw std::invalid_argument("Finite elements/Linear solver: unknown solver '" + solver + "'");
+  const std::string memory = prm.get("Iterative solver memory");
+  if (memory == to_string(IterativeSolverMemory::fast))
+    iterative_solver_memory = IterativeSolverMemory::fast;
+  else if (memory == to_string(IterativeSolverMemory::lean))
+    iterative_solver_memory = IterativeSolverMemory::lean;
+  else
+    throw std::invalid_argument("Finite elements/Iterative solver memory: unknown choice '" +
+                                memory + "'");
   linear_tolerance = prm.get_double("Linear solver tolerance");
   max_linear_iterations = prm.get_integer("Maximum linear iterations");
   residual_tolerance = prm.get_double("Residual tolerance");

@@ -24,6 +24,12 @@ enum class LinearSolverKind {
 bool uses_cg(LinearSolverKind kind);
 bool uses_gamg(LinearSolverKind kind);
 
+// What the iterative solvers trade between memory and time (petsc_linear_solver.h).
+enum class IterativeSolverMemory {
+  fast,  // PETSc's defaults: GAMG's Galerkin products through A P, GMRES restarted after 100
+  lean,  // P^T A P all at once (A P never stored), GMRES restarted after 30
+};
+
 // How the membrane treats slack (docs/model.md, "Slack: the tension field").
 enum class SlackTreatment {
   none,           // the law as given: compression is as stiff as tension
@@ -36,6 +42,7 @@ struct FemParameters {
   // triangles) hands the extractor a recovered traction (fem_backend.h).
   int element_degree = 1;
   LinearSolverKind linear_solver = LinearSolverKind::direct;
+  IterativeSolverMemory iterative_solver_memory = IterativeSolverMemory::fast;
   // Krylov stopping rule: residual relative to the right-hand side; the floor of the inexact
   // Newton forcing term (newton_solver.cc).
   double linear_tolerance = 1e-10;
@@ -77,5 +84,6 @@ struct FemParameters {
 
 const char* to_string(LinearSolverKind kind);
 const char* to_string(SlackTreatment treatment);
+const char* to_string(IterativeSolverMemory memory);
 
 }  // namespace tightfit

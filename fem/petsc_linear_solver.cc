@@ -1,5 +1,6 @@
 #include "fem/petsc_linear_solver.h"
 
+#include <array>
 #include <stdexcept>
 
 namespace tightfit {
@@ -35,6 +36,27 @@ void set_rigid_motions(Mat A, Vec coordinates) {
 }
 
 }  // namespace
+
+void select_iterative_solver_memory(IterativeSolverMemory memory) {
+  struct Option {
+    const char* name;
+    const char* lean_value;
+    bool set_here;
+  };
+  // PETSc's options are process-wide: remember which ones this function set.
+  static std::array<Option, 2> options{
+      {{"-matptap_via", "allatonce", false}, {"-fem_ksp_gmres_restart", "30", false}}};
+  for (Option& option : options) {
+    if (option.set_here) check(PetscOptionsClearValue(nullptr, option.name), "PetscOptionsClear");
+    option.set_here = false;
+    if (memory != IterativeSolverMemory::lean) continue;
+    PetscBool user_set = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, option.name, &user_set), "PetscOptionsHasName");
+    if (user_set) continue;
+    check(PetscOptionsSetValue(nullptr, option.name, option.lean_value), "PetscOptionsSetValue");
+    option.set_here = true;
+  }
+}
 
 PetscLinearSolver::PetscLinearSolver(LinearSolverKind kind, int max_iterations, MPI_Comm comm)
     : requested_(kind), kind_(kind), max_iterations_(max_iterations), comm_(comm) {}

@@ -25,6 +25,15 @@
 
 namespace tightfit {
 
+// Sets PETSc's process-wide options for `memory` (fem_parameters.h): with 'lean', GAMG's
+// Galerkin products P^T A P by the all-at-once algorithm (-matptap_via allatonce: each row of
+// the product formed and sent without storing A P, whose transient was the largest part of the
+// hierarchy's setup) and GMRES restarted after 30 iterations (-fem_ksp_gmres_restart 30: its
+// basis is the solve's largest single item). Options the user set (PETSC_OPTIONS) are kept;
+// those set here for 'lean' are removed again for 'fast'. Call with PETSc started, before the
+// solvers are configured.
+void select_iterative_solver_memory(IterativeSolverMemory memory);
+
 struct LinearSolveResult {
   int iterations = 0;  // Krylov iterations (0 for the direct solve)
   LinearSolverKind used = LinearSolverKind::direct;

@@ -40,7 +40,10 @@
 # garment's mesh, after the backend's setup, and its peak. Writes
 # docs/figures/scaling_gamg.csv (the largest rank's numbers), the fitted exponents of CPU time
 # and of the peak above the floor against the vertex count to docs/figures/scaling_gamg_fit.txt,
-# and docs/figures/scaling_gamg.png.
+# and docs/figures/scaling_gamg.png. The table's last column is the largest rank's peak during
+# the setup (the triangulation and DoF handler alive), before the solve.
+#   GAMG_MEMORY (default fast): the bench's `Finite elements/Iterative solver memory`; "lean"
+#   writes scaling_gamg_lean.csv, _fit.txt and .png instead.
 #   PLOT_ONLY=1: no runs; fit and draw the existing table again.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -100,30 +103,34 @@ measure() {
 }
 
 study=${STUDY:-all}
-gamg_table=$figures/scaling_gamg${suffix:+_blas}.csv
+gamg_memory=${GAMG_MEMORY:-fast}
+gamg_suffix=${suffix:+_blas}
+[[ $gamg_memory == fast ]] || gamg_suffix+=_$gamg_memory
+gamg_table=$figures/scaling_gamg$gamg_suffix.csv
 footprint=${FOOTPRINT:-build/bench/fem_solver_footprint}
 # footprint RANKS SCALE: one row of the GAMG footprint table.
 footprint() {
-  local ranks=$1 scale=$2 dir=$results/gamg-footprint${suffix}_np$1_s$2
+  local ranks=$1 scale=$2 dir=$results/gamg-footprint${gamg_suffix}_np$1_s$2
   local launcher=("$footprint")
   [[ $ranks -gt 1 ]] && launcher=(mpirun -np "$ranks" "$footprint")
   echo "== GAMG footprint, $ranks rank(s), mesh scale $scale"
   mkdir -p "$dir"
-  nice "${launcher[@]}" "$scale" cg-gamg >"$dir/run.log" 2>&1
+  nice "${launcher[@]}" "$scale" cg-gamg 1.1 "$gamg_memory" >"$dir/run.log" 2>&1
   local status=$?
   # The largest rank's line: "rank R of N: V vertices, cg-gamg: resident F MB with MPI ...,
-  # M MB with the mesh, S MB after setup, peak P MB (A MB above the first); C s CPU, ..."
-  # and the step's Newton iterations.
-  local newton
+  # M MB with the mesh, S MB after setup, peak P MB (A MB above the first); C s CPU, ...;
+  # setup peak Q MB; ..." and the step's Newton iterations.
+  local newton setup_peak
   newton=$(grep -oE '^newton [0-9]+' "$dir/run.log" | grep -oE '[0-9]+')
+  setup_peak=$(grep -oE 'setup peak [0-9]+' "$dir/run.log" | grep -oE '[0-9]+' | sort -n | tail -1)
   grep '^rank ' "$dir/run.log" | sed -E 's/^rank [0-9]+ of [0-9]+: ([0-9]+) vertices, [a-z-]+: resident ([0-9]+) MB with MPI and PETSc started, ([0-9]+) MB with the mesh, ([0-9]+) MB after setup, peak ([0-9]+) MB \(([0-9-]+) MB above the first\); ([0-9.]+) s CPU.*/\1 \2 \3 \4 \5 \6 \7/' |
     sort -k5 -n | tail -1 | while read -r v floor mesh setup peak above cpu; do
-    echo "$ranks,$scale,$v,${newton:-},$cpu,$floor,$mesh,$setup,$peak,$above,$status" | tee -a "$gamg_table"
+    echo "$ranks,$scale,$v,${newton:-},$cpu,$floor,$mesh,$setup,$peak,$above,$status,${setup_peak:-}" | tee -a "$gamg_table"
   done
 }
 if [[ $plot_only != 1 && $study != runs ]]; then
   [[ ${APPEND:-0} == 1 && -f $gamg_table ]] ||
-    echo "ranks,mesh_scale,n_vertices,newton_iterations,cpu_s,floor_MB,with_mesh_MB,after_setup_MB,peak_MB,peak_above_floor_MB,status" >"$gamg_table"
+    echo "ranks,mesh_scale,n_vertices,newton_iterations,cpu_s,floor_MB,with_mesh_MB,after_setup_MB,peak_MB,peak_above_floor_MB,status,setup_peak_MB" >"$gamg_table"
   for scale in "${scales[@]}"; do
     for ranks in $fe_ranks; do footprint "$ranks" "$scale"; done
   done
@@ -138,13 +145,13 @@ if [[ -f $gamg_table ]]; then
                    d = n[k] * sxx[k] - sx[k] * sx[k];
                    printf "GAMG footprint, %d rank(s): CPU time ~ N^%.2f, peak above the floor ~ N^%.2f (%d meshes)\n",
                           k, (n[k] * sxt[k] - sx[k] * st[k]) / d, (n[k] * sxm[k] - sx[k] * sm[k]) / d, n[k] } }' \
-    "$gamg_table" | sort | tee "$figures/scaling_gamg${suffix:+_blas}_fit.txt"
+    "$gamg_table" | sort | tee "$figures/scaling_gamg${gamg_suffix}_fit.txt"
   if command -v gnuplot >/dev/null; then
     gnuplot <<GNUPLOT
 set terminal pngcairo size 1200,500
-set output "$figures/scaling_gamg${suffix:+_blas}.png"
+set output "$figures/scaling_gamg${gamg_suffix}.png"
 set datafile separator ","
-set multiplot layout 1,2 title "4 5T tube from a start in contact at alpha 1.1, CG/GMRES + GAMG, the solver footprint bench"
+set multiplot layout 1,2 title "4 5T tube from a start in contact at alpha 1.1, CG/GMRES + GAMG ($gamg_memory), the solver footprint bench"
 set logscale xy
 set xlabel "vertices"
 set grid

@@ -3,7 +3,8 @@
 // `mpirun -np 2 fem_mpi_run compare FILE` solves the same case with the mesh and the solves
 // distributed and fails unless every mean pressure equals the serial one to 1e-8 relative.
 // A third argument sets the element degree (1 by default), a fourth the linear solver by its
-// parameter name (direct, MUMPS, by default; the reference is always written with it).
+// parameter name (direct, MUMPS, by default; the reference is always written with it), a fifth
+// `Finite elements/Iterative solver memory` (fast by default).
 #include "fem/fem_backend.h"
 #include "tube_problem.h"
 
@@ -17,14 +18,15 @@
 
 int main(int argc, char** argv) {
   using namespace tightfit;
-  if (argc < 3 || argc > 5) {
-    std::fprintf(stderr, "usage: fem_mpi_run write|compare FILE [ELEMENT_DEGREE [SOLVER]]\n");
+  if (argc < 3 || argc > 6) {
+    std::fprintf(stderr,
+                 "usage: fem_mpi_run write|compare FILE [ELEMENT_DEGREE [SOLVER [MEMORY]]]\n");
     return 2;
   }
   const std::string mode = argv[1], file = argv[2];
   const int degree = argc >= 4 ? std::stoi(argv[3]) : 1;
   LinearSolverKind solver = LinearSolverKind::direct;
-  if (argc == 5) {
+  if (argc >= 5) {
     bool known = false;
     for (const LinearSolverKind kind :
          {LinearSolverKind::direct, LinearSolverKind::cg_amg, LinearSolverKind::gmres_amg,
@@ -38,12 +40,22 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  IterativeSolverMemory memory = IterativeSolverMemory::fast;
+  if (argc == 6) {
+    if (argv[5] == std::string(to_string(IterativeSolverMemory::lean))) {
+      memory = IterativeSolverMemory::lean;
+    } else if (argv[5] != std::string(to_string(IterativeSolverMemory::fast))) {
+      std::fprintf(stderr, "fem_mpi_run: unknown iterative solver memory '%s'\n", argv[5]);
+      return 2;
+    }
+  }
   std::vector<double> means;
   int rank = 0, n_ranks = 1;
   {
     testing::TubeCase tube("st venant kirchhoff", EndCondition::held_ends);
     FemParameters parameters;
     parameters.linear_solver = solver;
+    parameters.iterative_solver_memory = memory;
     parameters.element_degree = degree;
     FemBackend backend(tube.problem, parameters);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
