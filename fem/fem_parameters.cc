@@ -84,9 +84,9 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
       "Iterative solver memory", to_string(d.iterative_solver_memory), Selection("fast|lean"),
       "What the Krylov solvers trade. 'fast': PETSc's defaults. 'lean': GAMG forms each coarse "
       "operator P^T A P all at once, never storing A P, and GMRES restarts after 30 iterations "
-      "instead of 100; on the 33088-vertex tube this lowers the peak memory above the "
-      "libraries' by about a quarter on 1 and on 2 ranks, for two to three times the CPU time "
-      "(docs/performance.md, 'Memory per rank with GAMG'). Unused by 'direct'.");
+      "instead of 100; on the 96600-vertex tube this lowers the peak memory above the "
+      "libraries' by 44% on one rank and 44% per rank on two, for 2.4 and 2 times the CPU "
+      "time (docs/performance.md, 'Memory per rank with GAMG'). Unused by 'direct'.");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
                     "Krylov solvers stop when the residual falls below eta times the right-hand "
                     "side, eta = 0.9 (|R_k|/|R_k-1|)^2 clamped to [this value, 1e-2] (inexact "
