@@ -11,6 +11,9 @@ namespace tightfit {
 struct MeshSpacing {
   double along_x_m = 0.008;
   double along_y_m = 0.022;
+  // Above 0: a pattern's triangles at this edge length, whatever its file's own Mesh edge
+  // length (the coarse copy of a garment that a dressing starts from; docs/dressing.md).
+  double pattern_edge_length_m = 0.0;
   void validate() const;  // throws std::invalid_argument unless both are positive
 };
 

@@ -86,7 +86,9 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
     const bool grids = prm.get_bool("Rectangles as grids");
     return [=](const std::string& name, const MeshSpacing& spacing) {
       pattern::PatternMeshOptions options;
-      options.edge_length_m = edge_length_m > 0 ? edge_length_m : spacing.along_x_m;
+      options.edge_length_m = spacing.pattern_edge_length_m > 0 ? spacing.pattern_edge_length_m
+                              : edge_length_m > 0               ? edge_length_m
+                                                                : spacing.along_x_m;
       options.min_angle_deg = min_angle_deg;
       if (grids) options.rectangle_grid = spacing;
       Garment garment = pattern::pattern_garment(p, options);
