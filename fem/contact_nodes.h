@@ -19,6 +19,9 @@ struct ContactNodes {
   // Coulomb friction's anchors per node, the tangential penalty of node k being the Problem's
   // tangential stiffness times w_k (inactive when the Problem's mu is 0).
   FrictionAnchors friction;
+  // Per node, the side of the contact kink a Newton step is solved on (contact_set_prediction.h):
+  // 0 the node's own at x, +1 in contact, -1 out of contact. Empty: every node its own.
+  std::vector<signed char> predicted_state;
 };
 
 // The rest edge length h_k of each node, m. A vertex: the mean rest length of the triangle

@@ -1,6 +1,7 @@
 #include "fem/contact_rounds.h"
 
 #include "contact/nodal_contact.h"
+#include "fem/contact_set_prediction.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,15 @@ void ContactRounds::start_from(const dealii::Vector<double>& x) {
   for (int node = 0; node < pattern_.n_nodes(); ++node)
     nodes[node] = pattern_.node_position(x, node);
   nodes_.friction.place(*problem_.body, nodes);
+}
+
+int ContactRounds::predict_contact_set(const dealii::Vector<double>& x,
+                                       const dealii::Vector<double>* increment) {
+  if (!increment) {
+    nodes_.predicted_state.clear();
+    return 0;
+  }
+  return tightfit::predict_contact_set(pattern_, *problem_.body, x, *increment, nodes_);
 }
 
 void ContactRounds::commit_friction(const dealii::Vector<double>& x) {

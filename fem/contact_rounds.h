@@ -43,6 +43,8 @@ class ContactRounds {
   // contact), N, and how many nodes slipped there.
   const std::vector<Vec3>& friction_force_N() const { return friction_force_N_; }
   int n_slipping() const { return n_slipping_; }
+  // NewtonSolver::ContactSetPredictor on these nodes (contact_set_prediction.h).
+  int predict_contact_set(const dealii::Vector<double>& x, const dealii::Vector<double>* increment);
 
   // Predicts the start from x, runs the rounds (Newton on `assemble` at fixed multipliers),
   // and records the converged step for the next secant. Throws SolverError when the gap does

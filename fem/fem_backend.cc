@@ -97,6 +97,11 @@ class FemBackend::Implementation {
                 tension_scale_N(*problem.mesh, problem.law->stiffness_scale()), problem.body,
                 comm_),
         contact_(pattern_, problem_, parameters) {
+    if (parameters.max_contact_set_predictions > 0)
+      newton_.set_contact_set_predictor(
+          [this](const dealii::Vector<double>& x, const dealii::Vector<double>* increment) {
+            return contact_.predict_contact_set(x, increment);
+          });
     // Start flat in the layout plane until the caller places the garment.
     const SimulationMesh& mesh = *problem.mesh;
     std::vector<Vec3> flat(mesh.n_vertices);
@@ -160,6 +165,8 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   for (int k : log.krylov_iterations) detail << " " << k;
   if (!log.notes.empty()) detail << " [" << log.notes << "]";
   if (log.n_shifted_solves > 0) detail << "; " << log.n_shifted_solves << " shifted tangents";
+  if (log.n_set_predictions > 0)
+    detail << "; " << log.n_set_predictions << " solves on a predicted contact set";
   detail << "; stop rule " << report.tolerance_N << " N"
          << (parameters_.stop_on_rms ? " (rms)" : "") << "; max gap "
          << contact_.max_penetration_m() << " m; " << rounds.n_active << " in contact";

@@ -120,6 +120,14 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Backtrack along each Newton direction until the residual norm decreases.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");
+  prm.declare_entry("Contact set predictions", std::to_string(d.max_contact_set_predictions),
+                    Integer(0, 100),
+                    "How often a Newton step may be solved again with the contact set it "
+                    "predicts (count): each node in or out of contact as the linearised gap after "
+                    "the step says, until the set the step was solved with is the one it "
+                    "predicts (a primal-dual active-set step; fem/contact_set_prediction.h). 0: "
+                    "every step on the nodes in contact where it starts, so that nodes reaching "
+                    "the body meet no penalty in the step and the line search shortens it.");
   prm.declare_entry(
       "Penalty factor", "100", Double(1e-3, 1e12),
       "Contact penalty k = beta Y / h_k^2 in Pa/m at each node (Y the law's stiffness "
@@ -193,6 +201,7 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   line_search = prm.get_bool("Line search");
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");
+  max_contact_set_predictions = prm.get_integer("Contact set predictions");
   penalty_factor = prm.get_double("Penalty factor");
   max_augmented_lagrangian_iterations = prm.get_integer("Maximum augmented Lagrangian iterations");
   gap_tolerance_m = prm.get_double("Gap tolerance");

@@ -161,9 +161,13 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
     // until the line search succeeds and shrinking tenfold after each success. The residual is
     // untouched, so the converged state is not biased.
-    dealii::Vector<double> trial(x);
+    dealii::Vector<double> trial(x), increment;
     bool tangent_current = false;
     double step_taken = 0.0;
+    // A step on the predicted contact set whose line search fails is tried again on the set at
+    // x, with the same shift, before the shift grows (on the tube holding on a cone the
+    // predicted steps alone stalled: friction is left out of the model where a node changes side).
+    bool predict = static_cast<bool>(predictor_), predicted = false, reassemble = false;
     for (int escalation = 0;; ++escalation) {
       // Yamashita and Fukushima's mu ~ |R|: it damps the step where the residual is large and
       // vanishes with it, so that convergence stays quadratic, even when the tangent is
@@ -174,11 +178,30 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         // At escalation 0 the tangent and residual at x are assembled already; later, the
         // tangent is assembled afresh. Either way it is shifted in place (same pattern: the
         // factorization's analysis is kept).
-        if (escalation > 0) assemble(x, true);
-        if (escalation > 0 || shift_N_per_m > 0.0)
+        if (escalation > 0 || reassemble) assemble(x, true);
+        if (escalation > 0 || reassemble || shift_N_per_m > 0.0)
           MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
         log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
+        increment = gather_increment(system);
+        // The step solved again on the contact set it reaches (contact_set_prediction.h), until
+        // the set it was solved with is the one it predicts. The model's residual at x is not
+        // R(x): the assembly at x is redone, on every node's own side, before it is read again.
+        predicted = false;
+        if (predict) {
+          for (int round = 0;
+               round < parameters_.max_contact_set_predictions && predictor_(x, &increment) > 0;
+               ++round) {
+            assemble(x, true);
+            if (shift_N_per_m > 0.0) MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
+            log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
+            increment = gather_increment(system);
+            ++log.n_set_predictions;
+            predicted = true;
+          }
+          predictor_(x, nullptr);
+        }
       } catch (const SolverError&) {
+        if (predictor_) predictor_(x, nullptr);
         // A singular tangent the residual's shift is too small to lift (a loose, stress-free
         // garment whose midpoint nodes have no stiffness across it): shift as after a failed
         // line search.
@@ -189,7 +212,6 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         ++log.n_shifted_solves;
         continue;
       }
-      const dealii::Vector<double> increment = gather_increment(system);
       // A step longer than half an edge leaves the region where the linearisation holds (and
       // may carry the garment, which has no bending stiffness, into a folded state): shorten
       // it.
@@ -216,6 +238,12 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         shift_N_per_m_ =
             shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m_ ? 0.1 * shift_N_per_m_ : 0;
         break;
+      }
+      if (predicted) {
+        predict = false;
+        reassemble = true;
+        --escalation;
+        continue;
       }
       if (escalation >= 8) break;  // take the shortest step tried; the iteration limit judges
       shift_N_per_m_ =

@@ -31,12 +31,18 @@ struct NewtonLog {
   std::vector<int> krylov_iterations;  // per linear solve (0 for the direct solver)
   std::string notes;                   // linear solver switches
   int n_shifted_solves = 0;            // tangents shifted after failed line searches
+  int n_set_predictions = 0;           // systems solved again on a predicted contact set
 };
 
 class NewtonSolver {
  public:
   // Fills system.rhs = -R(x) (constrained), and system.tangent = dR/dx when asked.
   using Assembler = std::function<void(const dealii::Vector<double>& x, bool with_tangent)>;
+  // Given x and Newton's increment, sets the contact set the next assembly takes for the step's
+  // model and returns how many nodes changed side (fem/contact_set_prediction.h); given a null
+  // increment, returns every node to its own side at the point assembled.
+  using ContactSetPredictor =
+      std::function<int(const dealii::Vector<double>& x, const dealii::Vector<double>* increment)>;
 
   // Y = stiffness_scale_N_per_m, h = pattern.mean_edge_m. The stop rule's force is 'Residual
   // tolerance' times Y h or, when 'Relative tolerance' is set, that times tension_scale_N, the
@@ -55,6 +61,10 @@ class NewtonSolver {
   // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
   void pattern_changed() { linear_solver_->reset(); }
   PetscLinearSolver& linear_solver() { return *linear_solver_; }
+  // Used by solve() for up to 'Contact set predictions' re-solves of each step.
+  void set_contact_set_predictor(ContactSetPredictor predictor) {
+    predictor_ = std::move(predictor);
+  }
 
   // Iterates from x until max |R| <= tolerance_N(); returns the iterations taken. Throws
   // SolverError (throw_step_failure) on a non-finite residual or too many iterations.
@@ -85,6 +95,7 @@ class NewtonSolver {
   const RigidBody* body_;
   MPI_Comm comm_;
   std::unique_ptr<PetscLinearSolver> linear_solver_;
+  ContactSetPredictor predictor_;
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
