@@ -35,4 +35,10 @@ struct NodalContact {
 NodalContact nodal_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
                            double penalty_N_per_m, bool with_stiffness);
 
+// The contact at a surface point with a given multiplier lambda (N), not clipped at zero: the
+// force lambda n and its derivatives as above. nodal_contact() uses it once lambda > 0; the FE
+// backend's contact set prediction uses it for a node the step brings into contact.
+NodalContact contact_with_multiplier(const SurfacePoint& s, double multiplier_N,
+                                     double penalty_N_per_m, bool with_stiffness);
+
 }  // namespace tightfit

@@ -6,18 +6,9 @@ namespace tightfit {
 
 NodalContact unclipped_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
                                double penalty_N_per_m) {
-  NodalContact c;
   const SurfacePoint s = body.query(x_m);
-  c.gap_m = s.signed_distance_m;
-  c.normal = s.outward_normal;
-  c.multiplier_N = multiplier_estimate_N - penalty_N_per_m * c.gap_m;
-  c.force_N = c.multiplier_N * c.normal;
-  const Mat3 K = penalty_N_per_m * c.normal * s.gap_gradient.transpose() -
-                 c.multiplier_N * s.normal_derivative_per_m;
-  c.stiffness_N_per_m = 0.5 * (K + K.transpose());
-  c.exact_stiffness_N_per_m = K;
-  c.multiplier_gradient_N_per_m = -penalty_N_per_m * s.gap_gradient;
-  return c;
+  return contact_with_multiplier(s, multiplier_estimate_N - penalty_N_per_m * s.signed_distance_m,
+                                 penalty_N_per_m, true);
 }
 
 int predict_contact_set(const PatternMesh& pattern, const RigidBody& body,
