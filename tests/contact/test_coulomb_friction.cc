@@ -2,6 +2,7 @@
 // consistent tangent against finite differences, and anchors that a growing or morphing body
 // carries with it.
 #include "body_mesh_files.h"
+#include "central_difference.h"
 #include "contact/coulomb_friction.h"
 #include "contact/cylinder.h"
 #include "contact/mesh_body.h"
@@ -88,14 +89,8 @@ void expect_tangent_matches(const RigidBody& body, const Vec3& x, const SurfaceL
                             const CoulombFrictionLaw& l, bool slipping) {
   const FrictionResponse r = friction_with_contact(body, x, anchor, l);
   ASSERT_EQ(r.slipping, slipping);
-  const double h = 1e-7;
-  Mat3 fd;
-  for (int j = 0; j < 3; ++j) {
-    const Vec3 e = h * Vec3::Unit(j);
-    fd.col(j) = -(friction_with_contact(body, x + e, anchor, l).force_N -
-                  friction_with_contact(body, x - e, anchor, l).force_N) /
-                (2 * h);
-  }
+  const Mat3 fd = testing::minus_force_jacobian(
+      [&](const Vec3& y) { return friction_with_contact(body, y, anchor, l).force_N; }, x);
   EXPECT_LT((r.stiffness_N_per_m - fd).norm(), 1e-6 * r.stiffness_N_per_m.norm())
       << "exact\n"
       << r.stiffness_N_per_m << "\nfd\n"

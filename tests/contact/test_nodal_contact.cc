@@ -1,6 +1,7 @@
 // The augmented-Lagrangian contact of one vertex: its stiffness against finite differences of
 // its force, and its multiplier against the law of penalty_contact.h.
 #include "body_mesh_files.h"
+#include "central_difference.h"
 #include "contact/cone.h"
 #include "contact/cylinder.h"
 #include "contact/mesh_body.h"
@@ -19,15 +20,8 @@ const double penalty = 2e4, multiplier = 0.3;
 // kA = 2e4 N/m: differences of 1e-16 N over 2e-7 m leave 1e-9 N/m of round-off, so 1e-5
 // relative to |K| ~ 2e4 is far above it.
 Mat3 minus_force_derivative(const RigidBody& body, const Vec3& x) {
-  const double h = 1e-7;
-  Mat3 K_fd;
-  for (int j = 0; j < 3; ++j) {
-    const Vec3 e = h * Vec3::Unit(j);
-    K_fd.col(j) = -(nodal_contact(body, x + e, multiplier, penalty, false).force_N -
-                    nodal_contact(body, x - e, multiplier, penalty, false).force_N) /
-                  (2 * h);
-  }
-  return K_fd;
+  return testing::minus_force_jacobian(
+      [&](const Vec3& y) { return nodal_contact(body, y, multiplier, penalty, false).force_N; }, x);
 }
 
 TEST(NodalContact, StiffnessIsMinusTheForceDerivative) {

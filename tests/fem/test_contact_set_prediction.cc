@@ -1,5 +1,6 @@
 // The step's model of a node that the Newton step carries into contact: the unclipped penalty
 // force and its tangent against central finite differences, on both sides of the surface.
+#include "central_difference.h"
 #include "contact/cylinder.h"
 #include "contact/nodal_contact.h"
 #include "fem/contact_set_prediction.h"
@@ -14,15 +15,8 @@ const double penalty = 2e4, multiplier = 0.3;
 // -d(force)/dx of the unclipped force by central differences (step 1e-7 m; as in
 // tests/contact/test_nodal_contact.cc, round-off stays near 1e-9 N/m against |K| ~ 2e4 N/m).
 Mat3 minus_force_derivative(const RigidBody& body, const Vec3& x) {
-  const double h = 1e-7;
-  Mat3 K;
-  for (int j = 0; j < 3; ++j) {
-    const Vec3 e = h * Vec3::Unit(j);
-    K.col(j) = -(unclipped_contact(body, x + e, multiplier, penalty).force_N -
-                 unclipped_contact(body, x - e, multiplier, penalty).force_N) /
-               (2 * h);
-  }
-  return K;
+  return testing::minus_force_jacobian(
+      [&](const Vec3& y) { return unclipped_contact(body, y, multiplier, penalty).force_N; }, x);
 }
 
 TEST(ContactSetPrediction, UnclippedForceOutsideTheBodyPullsAndItsTangentIsExact) {
