@@ -35,6 +35,25 @@ struct FrictionResponse {
   SurfaceLocation anchor;
 };
 
+// The anchor's offset in the tangent plane at x, u = P (x - a), and du/dx.
+struct TangentialOffset {
+  Vec3 u = Vec3::Zero();
+  Mat3 du_dx = Mat3::Zero();
+};
+TangentialOffset tangential_offset(const RigidBody& body, const Vec3& x_m, const SurfacePoint& at_x,
+                                   const SurfaceLocation& anchor);
+
+// The sticking branch of the return mapping on its own: f = -k_t u, -df/dx = k_t du/dx.
+FrictionResponse sticking_friction(const TangentialOffset& offset,
+                                   double tangential_penalty_N_per_m);
+
+// The slipping branch with its direction t held fixed: f = -mu N t, -df/dx = mu t (dN/dx)^T.
+// N is not clipped at zero (the FE contact set prediction continues the law to a node the Newton
+// step carries into contact, whose N at x is still a pull).
+FrictionResponse slipping_friction_along(const Vec3& direction, double friction_coefficient,
+                                         double normal_force_N,
+                                         const Vec3& normal_force_gradient_N_per_m);
+
 // `at_x` is body.query(x_m) (its normal, dn/dx and location); `normal_force_N` is N >= 0 and
 // `normal_force_gradient_N_per_m` dN/dx (nodal_contact.h: -kA dg/dx while in contact). A vertex
 // out of contact (N = 0) feels no friction and its anchor resets to its closest point.

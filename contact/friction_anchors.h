@@ -37,6 +37,12 @@ class FrictionAnchors {
                             const SurfacePoint& at_x, double normal_force_N,
                             const Vec3& normal_force_gradient_N_per_m = Vec3::Zero(),
                             NearFaces* near = nullptr) const;
+  // Vertex i's offset from its anchor in the tangent plane at x and its derivative.
+  TangentialOffset offset(int vertex, const RigidBody& body, const Vec3& x_m,
+                          const SurfacePoint& at_x) const {
+    return tangential_offset(body, x_m, at_x, anchor_[vertex]);
+  }
+  double friction_coefficient() const { return mu_; }
   // Keeps the anchor of an accepted state: `response` must be that state's.
   void commit(int vertex, const FrictionResponse& accepted) { anchor_[vertex] = accepted.anchor; }
   // k_t of vertex i, N/m (its contribution to the stiffest vertex of the explicit time step).

@@ -13,15 +13,29 @@
 
 namespace tightfit {
 
+// The branch of the Coulomb cone a Newton step is solved on at a node: its own at the point
+// assembled, sticking, or slipping along a direction the prediction fixes.
+enum class FrictionBranch : signed char { own, stick, slip };
+
+struct PredictedSide {
+  signed char contact = 0;  // 0 the node's own at x, +1 in contact, -1 out of contact
+  FrictionBranch friction = FrictionBranch::own;
+  Vec3 slip_direction = Vec3::Zero();  // unit, tangential, for FrictionBranch::slip
+  // Same sides of both kinks (the slip direction follows from them).
+  bool same_branches(const PredictedSide& other) const {
+    return contact == other.contact && friction == other.friction;
+  }
+};
+
 struct ContactNodes {
   std::vector<double> penalty_N_per_m;  // k_k w_k per node (w_k its positive nodal rest area)
   std::vector<double> multiplier_N;     // augmented-Lagrangian estimate per node, N
   // Coulomb friction's anchors per node, the tangential penalty of node k being the Problem's
   // tangential stiffness times w_k (inactive when the Problem's mu is 0).
   FrictionAnchors friction;
-  // Per node, the side of the contact kink a Newton step is solved on (contact_set_prediction.h):
-  // 0 the node's own at x, +1 in contact, -1 out of contact. Empty: every node its own.
-  std::vector<signed char> predicted_state;
+  // Per node, the side of the contact and friction kinks a Newton step is solved on
+  // (contact_set_prediction.h). Empty: every node its own at the point assembled.
+  std::vector<PredictedSide> predicted;
 };
 
 // The rest edge length h_k of each node, m. A vertex: the mean rest length of the triangle

@@ -46,7 +46,7 @@ void ContactRounds::start_from(const dealii::Vector<double>& x) {
 int ContactRounds::predict_contact_set(const dealii::Vector<double>& x,
                                        const dealii::Vector<double>* increment) {
   if (!increment) {
-    nodes_.predicted_state.clear();
+    nodes_.predicted.clear();
     return 0;
   }
   return tightfit::predict_contact_set(pattern_, *problem_.body, x, *increment, nodes_);

@@ -1,33 +1,94 @@
 #include "fem/contact_set_prediction.h"
 
+#include "contact/nodal_contact.h"
 #include "contact/penalty_contact.h"
 
 namespace tightfit {
 
-NodalContact unclipped_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
-                               double penalty_N_per_m) {
-  const SurfacePoint s = body.query(x_m);
-  return contact_with_multiplier(s, multiplier_estimate_N - penalty_N_per_m * s.signed_distance_m,
-                                 penalty_N_per_m, true);
+namespace {
+
+// The friction branch the step reaches at a node it predicts in contact with normal force
+// `lambda_after` > 0 (header): the node's own when it is in contact at x (lambda > 0) on the same
+// branch there.
+PredictedSide predicted_friction(const FrictionAnchors& friction, int node, const RigidBody& body,
+                                 const Vec3& p, const SurfacePoint& s, const Vec3& dx,
+                                 double lambda, double lambda_after) {
+  PredictedSide side;
+  const TangentialOffset offset = friction.offset(node, body, p, s);
+  const Vec3 u_after = offset.u + offset.du_dx * dx;
+  const double k = friction.tangential_stiffness_N_per_m(node);
+  const double mu = friction.friction_coefficient();
+  const bool sticks_after = k * u_after.norm() <= mu * lambda_after;
+  if (lambda > 0.0 && (k * offset.u.norm() <= mu * lambda) == sticks_after) return side;
+  side.friction = sticks_after ? FrictionBranch::stick : FrictionBranch::slip;
+  // Slipping: k |u_after| > mu lambda_after > 0, so u_after has a direction.
+  if (!sticks_after) side.slip_direction = u_after.normalized();
+  return side;
+}
+
+}  // namespace
+
+bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int node, const Vec3& p,
+                        bool with_tangent, bool symmetric_contact, Vec3& force_N,
+                        Mat3& stiffness_N_per_m) {
+  force_N = Vec3::Zero();
+  stiffness_N_per_m = Mat3::Zero();
+  const PredictedSide side = nodes.predicted.empty() ? PredictedSide() : nodes.predicted[node];
+  if (side.contact < 0) return false;  // the step leaves contact here: no contact, no friction
+  const SurfacePoint s = body.query(p);
+  const double lambda_bar = nodes.multiplier_N[node], kA = nodes.penalty_N_per_m[node];
+  // Predicted in contact: the penalty force unclipped (a pull while p is outside the body).
+  const double lambda = side.contact > 0
+                            ? lambda_bar - kA * s.signed_distance_m
+                            : contact_multiplier_N(lambda_bar, kA, s.signed_distance_m);
+  if (side.contact == 0 && lambda <= 0.0) return false;
+  const NodalContact c = contact_with_multiplier(s, lambda, kA, with_tangent);
+  force_N = c.force_N;
+  stiffness_N_per_m = symmetric_contact ? c.stiffness_N_per_m : c.exact_stiffness_N_per_m;
+  const FrictionAnchors& friction = nodes.friction;
+  if (!friction.active()) return true;
+  // Friction's cone mu lambda moves with the node: its tangent has mu s (dlambda/dx)^T.
+  const Vec3& dlambda_dx = c.multiplier_gradient_N_per_m;
+  FrictionResponse r;
+  switch (side.friction) {
+    case FrictionBranch::own:
+      r = friction.response(node, body, p, s, lambda, dlambda_dx);
+      break;
+    case FrictionBranch::stick:
+      r = sticking_friction(friction.offset(node, body, p, s),
+                            friction.tangential_stiffness_N_per_m(node));
+      break;
+    case FrictionBranch::slip:
+      r = slipping_friction_along(side.slip_direction, friction.friction_coefficient(), lambda,
+                                  dlambda_dx);
+      break;
+  }
+  force_N += r.force_N;
+  stiffness_N_per_m += r.stiffness_N_per_m;
+  return true;
 }
 
 int predict_contact_set(const PatternMesh& pattern, const RigidBody& body,
                         const dealii::Vector<double>& x, const dealii::Vector<double>& increment,
                         ContactNodes& nodes) {
-  std::vector<signed char>& state = nodes.predicted_state;
-  state.resize(pattern.n_nodes(), 0);
+  std::vector<PredictedSide>& predicted = nodes.predicted;
+  predicted.resize(pattern.n_nodes());
   int n_changed = 0;
   for (int node = 0; node < pattern.n_nodes(); ++node) {
-    const SurfacePoint s = body.query(pattern.node_position(x, node));
-    const double lambda_bar = nodes.multiplier_N[node], kA = nodes.penalty_N_per_m[node];
+    const Vec3 p = pattern.node_position(x, node);
     // The node's displacement: node_position reads its DoF values, here the increment's.
-    const double gap_after =
-        s.signed_distance_m + s.gap_gradient.dot(pattern.node_position(increment, node));
-    const bool in_contact = contact_multiplier_N(lambda_bar, kA, s.signed_distance_m) > 0.0;
-    const bool predicted = lambda_bar - kA * gap_after > 0.0;
-    const signed char value = predicted == in_contact ? 0 : (predicted ? 1 : -1);
-    n_changed += value != state[node];
-    state[node] = value;
+    const Vec3 dx = pattern.node_position(increment, node);
+    const SurfacePoint s = body.query(p);
+    const double lambda_bar = nodes.multiplier_N[node], kA = nodes.penalty_N_per_m[node];
+    const double lambda = contact_multiplier_N(lambda_bar, kA, s.signed_distance_m);
+    const double lambda_after = lambda_bar - kA * (s.signed_distance_m + s.gap_gradient.dot(dx));
+    const bool in_contact = lambda > 0.0, in_contact_after = lambda_after > 0.0;
+    PredictedSide side;
+    if (in_contact_after && nodes.friction.active())
+      side = predicted_friction(nodes.friction, node, body, p, s, dx, lambda, lambda_after);
+    side.contact = in_contact_after == in_contact ? 0 : (in_contact_after ? 1 : -1);
+    n_changed += !side.same_branches(predicted[node]);
+    predicted[node] = side;
   }
   return n_changed;
 }

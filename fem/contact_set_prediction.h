@@ -12,26 +12,39 @@
 // set the step predicts is the set it was solved with. A node predicted in contact that is out
 // of contact at x takes the unclipped penalty force (lambda_bar - kA g) n (a pull, lambda < 0)
 // with its tangent kA n (dg/dx)^T - lambda dn/dx; a node predicted out of contact that is in
-// contact at x drops its contact and friction force and stiffness. Only the step changes: the
-// line search and the stop rule read the true residual.
+// contact at x drops its contact and friction force and stiffness.
+//
+// Coulomb friction has a kink of its own, the cone's edge k_t |u| = mu lambda (u the offset from
+// the anchor, contact/coulomb_friction.h), and the same treatment (the semismooth Newton step of
+// Alart and Curnier's friction, as in Hueber, Stadler and Wohlmuth 2008): at each node the step
+// predicts in contact, the linearised offset u + du/dx . dx and normal force lambda_bar - kA (g +
+// dg/dx . dx) decide the branch. Where it differs from the node's own at x (or the node is out of
+// contact at x), the step is solved on it: sticking, -k_t u with tangent k_t du/dx; slipping,
+// -mu lambda t with tangent mu t (dlambda/dx)^T, t the predicted slip's direction held fixed and
+// lambda unclipped. Without this a node the step brought into contact met the step's end with no
+// friction in the model and slid: on a tube held by friction on a cone the nodes slid past their
+// anchors, to where friction at its limit pulls back with no stiffness along the slip, and
+// Newton stalled. Only the step changes: the line search and the stop rule read the true
+// residual.
 #pragma once
 
-#include "contact/nodal_contact.h"
 #include "contact/rigid_body.h"
 #include "fem/contact_nodes.h"
 #include "fem/pattern_mesh.h"
 
 namespace tightfit {
 
-// lambda n with lambda = lambda_bar - kA g not clipped at zero, and its exact tangent
-// -d(force)/dx = kA n (dg/dx)^T - lambda dn/dx, N/m (the symmetrised one in stiffness_N_per_m).
-NodalContact unclipped_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
-                               double penalty_N_per_m);
+// The contact and friction force on `node` at p on the sides nodes.predicted holds for it (its
+// own at p where that is empty or 0), and -d(force)/dx when `with_tangent`: exact, or with the
+// contact's part symmetrised when `symmetric_contact` (contact/nodal_contact.h). Returns false
+// where the node feels neither.
+bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int node, const Vec3& p,
+                        bool with_tangent, bool symmetric_contact, Vec3& force_N,
+                        Mat3& stiffness_N_per_m);
 
-// Sets nodes.predicted_state for the Newton step `increment` from x: +1 where the linearised
-// gap puts a node out of contact at x in contact after the step, -1 where it puts a node in
-// contact at x out of it, 0 elsewhere. Returns how many nodes' predictions differ from those
-// nodes.predicted_state held before (0: the step was solved with the set it predicts).
+// Sets nodes.predicted for the Newton step `increment` from x (above). Returns how many nodes'
+// contact side or friction branch differ from those nodes.predicted held before (0: the step was
+// solved on the sides it predicts).
 int predict_contact_set(const PatternMesh& pattern, const RigidBody& body,
                         const dealii::Vector<double>& x, const dealii::Vector<double>& increment,
                         ContactNodes& nodes);

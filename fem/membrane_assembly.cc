@@ -1,6 +1,5 @@
 #include "fem/membrane_assembly.h"
 
-#include "contact/nodal_contact.h"
 #include "fem/contact_set_prediction.h"
 #include "fem/membrane_kernel.h"
 
@@ -17,28 +16,8 @@ MembraneAssembly::MembraneAssembly(const PatternMesh& pattern, const Problem& pr
 bool MembraneAssembly::node_contact(int node, const Vec3& p, const ContactNodes& contact,
                                     bool with_tangent, Vec3& force_N,
                                     Mat3& stiffness_N_per_m) const {
-  force_N = Vec3::Zero();
-  stiffness_N_per_m = Mat3::Zero();
-  const signed char predicted = contact.predicted_state.empty() ? 0 : contact.predicted_state[node];
-  if (predicted < 0) return false;  // the step leaves contact here: no contact, no friction
-  const NodalContact c = predicted > 0
-                             ? unclipped_contact(*problem_.body, p, contact.multiplier_N[node],
-                                                 contact.penalty_N_per_m[node])
-                             : nodal_contact(*problem_.body, p, contact.multiplier_N[node],
-                                             contact.penalty_N_per_m[node], with_tangent);
-  force_N = c.force_N;
-  stiffness_N_per_m = symmetric_tangent_ ? c.stiffness_N_per_m : c.exact_stiffness_N_per_m;
-  if (predicted > 0) return true;  // out of contact at x: no friction in the step's model
-  if (c.multiplier_N <= 0.0) return false;
-  if (contact.friction.active()) {
-    // Friction's cone mu lambda moves with the node: its tangent has mu s (dlambda/dx)^T.
-    const FrictionResponse r =
-        contact.friction.response(node, *problem_.body, p, problem_.body->query(p), c.multiplier_N,
-                                  c.multiplier_gradient_N_per_m);
-    force_N += r.force_N;
-    stiffness_N_per_m += r.stiffness_N_per_m;
-  }
-  return true;
+  return model_node_contact(*problem_.body, contact, node, p, with_tangent, symmetric_tangent_,
+                            force_N, stiffness_N_per_m);
 }
 
 void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<double>& x,

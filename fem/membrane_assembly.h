@@ -54,8 +54,9 @@ class MembraneAssembly {
   Vec3 weight_per_rest_area() const;
 
   // The contact force on a node at p (normal, and with friction the return mapping from the
-  // anchors of the last accepted state) and, with_tangent, minus its derivative. Returns false
-  // when the node is out of contact (no force, no stiffness).
+  // anchors of the last accepted state), on the sides of the contact and friction kinks the
+  // step's prediction holds (contact_set_prediction.h), and, with_tangent, minus its derivative.
+  // Returns false when the node is out of contact (no force, no stiffness).
   bool node_contact(int node, const Vec3& p, const ContactNodes& contact, bool with_tangent,
                     Vec3& force_N, Mat3& stiffness_N_per_m) const;
 

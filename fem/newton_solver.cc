@@ -165,8 +165,8 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     bool tangent_current = false;
     double step_taken = 0.0;
     // A step on the predicted contact set whose line search fails is tried again on the set at
-    // x, with the same shift, before the shift grows (on the tube holding on a cone the
-    // predicted steps alone stalled: friction is left out of the model where a node changes side).
+    // x, with the same shift, before the shift grows: the prediction is the linearised step's,
+    // and a step that ends far from it (a facet crossed, a turned normal) may not descend.
     bool predict = static_cast<bool>(predictor_), predicted = false, reassemble = false;
     for (int escalation = 0;; ++escalation) {
       // Yamashita and Fukushima's mu ~ |R|: it damps the step where the residual is large and
