@@ -13,6 +13,8 @@
 
 namespace tightfit {
 
+// Each array holds this rank's nodes only, node PatternMesh::owned_nodes[k] at position k (on
+// one rank, every node at its own number): the rank that owns a node's DoFs assembles its contact.
 struct ContactNodes {
   std::vector<double> penalty_N_per_m;  // k_k w_k per node (w_k its positive nodal rest area)
   std::vector<double> multiplier_N;     // augmented-Lagrangian estimate per node, N

@@ -28,12 +28,12 @@ namespace tightfit {
 NodalContact unclipped_contact(const RigidBody& body, const Vec3& x_m, double multiplier_estimate_N,
                                double penalty_N_per_m);
 
-// Sets nodes.predicted_state for the Newton step `increment` from x: +1 where the linearised
-// gap puts a node out of contact at x in contact after the step, -1 where it puts a node in
-// contact at x out of it, 0 elsewhere. Returns how many nodes' predictions differ from those
-// nodes.predicted_state held before (0: the step was solved with the set it predicts).
-int predict_contact_set(const PatternMesh& pattern, const RigidBody& body,
-                        const dealii::Vector<double>& x, const dealii::Vector<double>& increment,
-                        ContactNodes& nodes);
+// Sets nodes.predicted_state of this rank's nodes for the Newton step `increment` from x: +1
+// where the linearised gap puts a node out of contact at x in contact after the step, -1 where
+// it puts a node in contact at x out of it, 0 elsewhere. Returns how many nodes' predictions, on
+// every rank, differ from those nodes.predicted_state held before (0: the step was solved with
+// the set it predicts); collective.
+int predict_contact_set(const PatternMesh& pattern, const RigidBody& body, const DofVector& x,
+                        const DofVector& increment, ContactNodes& nodes);
 
 }  // namespace tightfit

@@ -38,7 +38,7 @@ void constrain_directions(const DofTriple& dofs, const std::vector<Vec3>& direct
 }  // namespace
 
 void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
-                                  const dealii::Vector<double>& x, MPI_Comm comm,
+                                  const std::vector<Vec3>& positions_m, MPI_Comm comm,
                                   NewtonSystem& system) {
   dealii::AffineConstraints<double>& constraints = system.constraints;
   constraints.clear();
@@ -55,9 +55,8 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
     if (pattern.node_constrained.constrained(node))
       constrain_directions(pattern.node_copies[node].front(),
                            pattern.node_constrained.directions(node), constraints);
-  const RigidMotionPin pin =
-      rigid_motion_pin(*problem.body, pattern.vertex_positions(x), pattern.node_constrained,
-                       problem.friction_coefficient > 0.0);
+  const RigidMotionPin pin = rigid_motion_pin(*problem.body, positions_m, pattern.node_constrained,
+                                              problem.friction_coefficient > 0.0);
   for (const RigidMotionPin::Pin& p : pin.pins)
     constrain_directions(pattern.vertex_dofs[pattern.master[p.vertex]], p.directions, constraints);
   constraints.close();
