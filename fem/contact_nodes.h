@@ -27,13 +27,15 @@ struct PredictedSide {
   }
 };
 
+// Each array holds this rank's nodes only, node PatternMesh::owned_nodes[k] at position k (on
+// one rank, every node at its own number): the rank that owns a node's DoFs assembles its contact.
 struct ContactNodes {
   std::vector<double> penalty_N_per_m;  // k_k w_k per node (w_k its positive nodal rest area)
   std::vector<double> multiplier_N;     // augmented-Lagrangian estimate per node, N
   // Coulomb friction's anchors per node, the tangential penalty of node k being the Problem's
   // tangential stiffness times w_k (inactive when the Problem's mu is 0).
   FrictionAnchors friction;
-  // Per node, the side of the contact and friction kinks a Newton step is solved on
+  // Per owned node, the side of the contact and friction kinks a Newton step is solved on
   // (contact_set_prediction.h). Empty: every node its own at the point assembled.
   std::vector<PredictedSide> predicted;
 };
