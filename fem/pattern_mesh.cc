@@ -194,12 +194,9 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
     for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
       shape_values[q][a] = fe.base_element(0).shape_value(a, p);
   }
-  // DoF -> the node it carries or follows; a cell adds to the rows of its own DoFs and, for a
-  // seam copy, to those of the copy that carries the node (fem_constraints.h).
-  std::vector<int> dof_node(n_dofs(), -1);
-  for (int node = 0; node < n_nodes(); ++node)
-    for (const DofTriple& d : node_copies[node])
-      for (const GlobalDof i : d) dof_node[i] = node;
+  // A cell adds to the rows of its own DoFs and, for a seam copy, to those of the copy that
+  // carries the node (fem_constraints.h).
+  const std::vector<int> dof_node = dof_nodes();
   const auto adds_to_owned_row = [&](const std::vector<GlobalDof>& dofs) {
     for (const GlobalDof i : dofs)
       for (const GlobalDof row : {i, node_copies[dof_node[i]].front()[0]})
@@ -253,11 +250,16 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
   cell_node_rest_area_m2.shrink_to_fit();
 }
 
-void PatternMesh::build_relevant_dofs() {
+std::vector<int> PatternMesh::dof_nodes() const {
   std::vector<int> dof_node(n_dofs(), -1);
   for (int node = 0; node < n_nodes(); ++node)
     for (const DofTriple& d : node_copies[node])
       for (const GlobalDof i : d) dof_node[i] = node;
+  return dof_node;
+}
+
+void PatternMesh::build_relevant_dofs() {
+  const std::vector<int> dof_node = dof_nodes();
   std::vector<char> relevant_node(n_nodes(), 0);
   for (int cell = 0; cell < n_cells(); ++cell)
     for (const GlobalDof i : cell_dofs[cell]) relevant_node[dof_node[i]] = 1;

@@ -170,6 +170,8 @@ class PatternMesh {
   static Vec3 triple_value(const VectorType& x, const DofTriple& d) {
     return Vec3(x(d[0]), x(d[1]), x(d[2]));
   }
+  // DoF -> the node it carries or follows (every DoF of every rank).
+  std::vector<int> dof_nodes() const;
   // relevant_dofs, the partitioner, owned_nodes and seam_nodes_, from the stored cells.
   void build_relevant_dofs();
   // The nodes with a copy other than the carrying one among this rank's DoFs (copy_seams).
