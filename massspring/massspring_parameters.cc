@@ -40,6 +40,12 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
                     "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
                     "(membrane, bending, penalty contact), recomputed every load step.");
+  prm.declare_entry("Time step update frames", text(d.time_step_update_frames),
+                    Integer(0, 100000000),
+                    "With the automatic time step (Time step = 0), above 0: the step is chosen "
+                    "again from the current state every this many frames of a load step (halved "
+                    "as often as the stall test has halved it). 0 = chosen once at the start of "
+                    "each load step.");
   prm.declare_entry("Time step safety", text(d.time_step_safety), Double(1e-3, 1.2),
                     "Fraction of the RK4 stability limit used by the automatic time step, "
                     "dimensionless.");
@@ -136,6 +142,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
+  time_step_update_frames = prm.get_integer("Time step update frames");
   damping_per_s = prm.get_double("Damping");
   contact_normal_damping_ratio = prm.get_double("Contact normal damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");

@@ -48,6 +48,11 @@ struct MassSpringParameters {
   // RK4 time step, s; 0 chooses it from the stiffest vertex (membrane, bending and penalty
   // contact) at the start of every load step.
   double time_step_s = 0.0;
+  // With the automatic time step, above 0: the step is chosen again from the current state every
+  // this many frames of a load step (less the stall test's halvings), as the dressing does. A
+  // start with one squashed edge (a state carried from a coarse mesh) then does not keep the
+  // whole settle at that edge's step. 0: chosen once, at the start of each load step.
+  int time_step_update_frames = 0;
   // Fraction of the RK4 stability limit (2 sqrt(2) / omega_max) the automatic step uses.
   double time_step_safety = 0.9;
   // Mass-proportional damping c (the acceleration gets -c v), 1/s; 0 chooses it from the
