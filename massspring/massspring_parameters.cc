@@ -56,9 +56,10 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     Double(0.0, 1.0),
                     "Damping ratio zeta of each vertex's penalty contact spring along the body's "
                     "normal, dimensionless in [0, 1]: a vertex in contact gets -2 zeta sqrt(kA m) "
-                    "(v . n) n (kA its penalty stiffness in N/m, m its mass in kg, v its velocity, "
-                    "n the contact normal); 1 = critical damping of the mass on its contact "
-                    "spring. Damps the chatter of vertices on a faceted body, not a slide along "
+                    "(v . d) d (kA its penalty stiffness in N/m, m its mass in kg, v its velocity, "
+                    "d the gradient of its gap: the normal, the face's on a faceted body); 1 = "
+                    "critical damping of the mass on its contact spring. Damps the chatter of "
+                    "vertices on a faceted body, not a slide along "
                     "it; the stop rule's residual leaves it out. 0 = off. RK4 only.");
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
