@@ -388,6 +388,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
         history.restart();
       }
       ++frame;
+      if (parameters_.time_step_update_frames > 0 && parameters_.time_step_s == 0 &&
+          frame % parameters_.time_step_update_frames == 0)
+        time_step_s_ = std::ldexp(choose_time_step_s(), -halvings);
       throw_if_interrupted(interruption_signal(),
                            "during " + step_name(step) + " at frame " + std::to_string(frame));
       if (frame % 64 == 0)

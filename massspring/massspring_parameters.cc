@@ -40,6 +40,12 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
                     "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
                     "(membrane, bending, penalty contact), recomputed every load step.");
+  prm.declare_entry("Time step update frames", text(d.time_step_update_frames),
+                    Integer(0, 100000000),
+                    "With the automatic time step (Time step = 0), above 0: the step is chosen "
+                    "again from the current state every this many frames of a load step (halved "
+                    "as often as the stall test has halved it). 0 = chosen once at the start of "
+                    "each load step.");
   prm.declare_entry("Time step safety", text(d.time_step_safety), Double(1e-3, 1.2),
                     "Fraction of the RK4 stability limit used by the automatic time step, "
                     "dimensionless.");
@@ -50,9 +56,10 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     Double(0.0, 1.0),
                     "Damping ratio zeta of each vertex's penalty contact spring along the body's "
                     "normal, dimensionless in [0, 1]: a vertex in contact gets -2 zeta sqrt(kA m) "
-                    "(v . n) n (kA its penalty stiffness in N/m, m its mass in kg, v its velocity, "
-                    "n the contact normal); 1 = critical damping of the mass on its contact "
-                    "spring. Damps the chatter of vertices on a faceted body, not a slide along "
+                    "(v . d) d (kA its penalty stiffness in N/m, m its mass in kg, v its velocity, "
+                    "d the gradient of its gap: the normal, the face's on a faceted body); 1 = "
+                    "critical damping of the mass on its contact spring. Damps the chatter of "
+                    "vertices on a faceted body, not a slide along "
                     "it; the stop rule's residual leaves it out. 0 = off. RK4 only.");
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
@@ -136,6 +143,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
+  time_step_update_frames = prm.get_integer("Time step update frames");
   damping_per_s = prm.get_double("Damping");
   contact_normal_damping_ratio = prm.get_double("Contact normal damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");

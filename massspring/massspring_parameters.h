@@ -48,14 +48,21 @@ struct MassSpringParameters {
   // RK4 time step, s; 0 chooses it from the stiffest vertex (membrane, bending and penalty
   // contact) at the start of every load step.
   double time_step_s = 0.0;
+  // With the automatic time step, above 0: the step is chosen again from the current state every
+  // this many frames of a load step (less the stall test's halvings), as the dressing does. A
+  // start with one squashed edge (a state carried from a coarse mesh) then does not keep the
+  // whole settle at that edge's step. 0: chosen once, at the start of each load step.
+  int time_step_update_frames = 0;
   // Fraction of the RK4 stability limit (2 sqrt(2) / omega_max) the automatic step uses.
   double time_step_safety = 0.9;
   // Mass-proportional damping c (the acceleration gets -c v), 1/s; 0 chooses it from the
   // garment's slowest membrane wave (critical_damping_per_s, stable_time_step.h).
   double damping_per_s = 0.0;
   // Damping ratio zeta of each vertex's contact spring along the body's normal, dimensionless
-  // in [0, 1]: a vertex in contact (lambda > 0) gets -2 zeta sqrt(kA m) (v . n) n (kA its
-  // penalty stiffness, m its mass, n the contact normal), zeta = 1 the critical damping of the
+  // in [0, 1]: a vertex in contact (lambda > 0) gets -2 zeta sqrt(kA m) (v . d) d (kA its
+  // penalty stiffness, m its mass, d the gradient of its gap, which on a faceted body is the
+  // face's normal, not the interpolated one the force takes: massspring_backend.h says why),
+  // zeta = 1 the critical damping of the
   // mode of the mass on that spring. Tangential motion is not damped by it, so neither is a
   // slide over the body; the force is left out of the residual the stop rule reads (as the
   // damping above is). 0: off.

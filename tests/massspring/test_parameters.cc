@@ -65,26 +65,43 @@ TEST(MassSpringParameters, ReadsAFileAndRejectsValuesOutOfRange) {
       prm.parse_input_from_string("subsection Mass spring\n  set Relative tolerance = 2\nend\n"));
 }
 
-TEST(MassSpringParameters, ContactNormalDampingRatioIsReadAndKeptWithinCritical) {
-  dealii::ParameterHandler prm;
-  MassSpringParameters::declare_parameters(prm);
-  prm.parse_input_from_string(
-      "subsection Mass spring\n  set Contact normal damping ratio = 0.5\nend\n");
-  MassSpringParameters p;
-  p.parse_parameters(prm);
-  EXPECT_DOUBLE_EQ(p.contact_normal_damping_ratio, 0.5);
-  EXPECT_EQ(MassSpringParameters{}.contact_normal_damping_ratio, 0.0);
-  EXPECT_ANY_THROW(prm.parse_input_from_string(
-      "subsection Mass spring\n  set Contact normal damping ratio = 1.5\nend\n"));
-  p.contact_normal_damping_ratio = -0.1;
+// `p` refused by validate() with a message naming Mass spring/`entry`.
+void expect_refused_naming(const MassSpringParameters& p, const std::string& entry) {
   try {
     p.validate();
-    ADD_FAILURE() << "a negative damping ratio was accepted";
+    ADD_FAILURE() << "Mass spring/" << entry << " was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("Mass spring/Contact normal damping ratio"),
-              std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("Mass spring/" + entry), std::string::npos) << e.what();
   }
+}
+
+// The entry read from a file at `value`, and a file giving it `out_of_range` refused.
+MassSpringParameters read_with(const std::string& entry, const std::string& value,
+                               const std::string& out_of_range) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  const std::string head = "subsection Mass spring\n  set " + entry + " = ";
+  prm.parse_input_from_string(head + value + "\nend\n");
+  MassSpringParameters p;
+  p.parse_parameters(prm);
+  EXPECT_ANY_THROW(prm.parse_input_from_string(head + out_of_range + "\nend\n"));
+  return p;
+}
+
+TEST(MassSpringParameters, TimeStepUpdateFramesAreReadAndNotNegative) {
+  MassSpringParameters p = read_with("Time step update frames", "100", "-1");
+  EXPECT_EQ(p.time_step_update_frames, 100);
+  EXPECT_EQ(MassSpringParameters{}.time_step_update_frames, 0);
+  p.time_step_update_frames = -1;
+  expect_refused_naming(p, "Time step update frames");
+}
+
+TEST(MassSpringParameters, ContactNormalDampingRatioIsReadAndKeptWithinCritical) {
+  MassSpringParameters p = read_with("Contact normal damping ratio", "0.5", "1.5");
+  EXPECT_DOUBLE_EQ(p.contact_normal_damping_ratio, 0.5);
+  EXPECT_EQ(MassSpringParameters{}.contact_normal_damping_ratio, 0.0);
+  p.contact_normal_damping_ratio = -0.1;
+  expect_refused_naming(p, "Contact normal damping ratio");
 }
 
 }  // namespace
