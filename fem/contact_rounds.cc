@@ -1,6 +1,6 @@
 #include "fem/contact_rounds.h"
 
-#include "contact/nodal_contact.h"
+#include "contact/penalty_contact.h"
 #include "fem/contact_set_prediction.h"
 
 #include <algorithm>
@@ -31,6 +31,7 @@ ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
   nodes_.friction =
       FrictionAnchors(problem.friction_coefficient, problem.tangential_stiffness_Pa_per_m, area_m2);
   nodes_.multiplier_N.assign(pattern.n_nodes(), 0.0);
+  nodes_.near_faces.resize(pattern.n_nodes());
 }
 
 void ContactRounds::start_from(const dealii::Vector<double>& x) {
@@ -58,7 +59,8 @@ void ContactRounds::commit_friction(const dealii::Vector<double>& x) {
   for (int node = 0; node < pattern_.n_nodes(); ++node) {
     const Vec3 p = pattern_.node_position(x, node);
     const FrictionResponse r = nodes_.friction.response(
-        node, *problem_.body, p, problem_.body->query(p), std::max(0.0, nodes_.multiplier_N[node]));
+        node, *problem_.body, p, nodes_.query(*problem_.body, node, p),
+        std::max(0.0, nodes_.multiplier_N[node]), Vec3::Zero(), nodes_.near(node));
     nodes_.friction.commit(node, r);
     friction_force_N_[node] = r.force_N;
     n_slipping_ += r.slipping;
@@ -98,13 +100,12 @@ int ContactRounds::update_multipliers(const dealii::Vector<double>& x) {
   max_penetration_m_ = 0.0;
   int n_active = 0;
   for (int node = 0; node < pattern_.n_nodes(); ++node) {
-    const NodalContact c =
-        nodal_contact(*problem_.body, pattern_.node_position(x, node), nodes_.multiplier_N[node],
-                      nodes_.penalty_N_per_m[node], false);
-    nodes_.multiplier_N[node] = c.multiplier_N;
-    if (c.multiplier_N > 0.0) {
+    const SurfacePoint s = nodes_.query(*problem_.body, node, pattern_.node_position(x, node));
+    nodes_.multiplier_N[node] = contact_multiplier_N(
+        nodes_.multiplier_N[node], nodes_.penalty_N_per_m[node], s.signed_distance_m);
+    if (nodes_.multiplier_N[node] > 0.0) {
       ++n_active;
-      max_penetration_m_ = std::max(max_penetration_m_, std::abs(c.gap_m));
+      max_penetration_m_ = std::max(max_penetration_m_, std::abs(s.signed_distance_m));
     }
   }
   return n_active;

@@ -35,7 +35,7 @@ bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int no
   stiffness_N_per_m = Mat3::Zero();
   const PredictedSide side = nodes.predicted.empty() ? PredictedSide() : nodes.predicted[node];
   if (side.contact < 0) return false;  // the step leaves contact here: no contact, no friction
-  const SurfacePoint s = body.query(p);
+  const SurfacePoint s = nodes.query(body, node, p);
   const double lambda_bar = nodes.multiplier_N[node], kA = nodes.penalty_N_per_m[node];
   // Predicted in contact: the penalty force unclipped (a pull while p is outside the body).
   const double lambda = side.contact > 0
@@ -52,7 +52,7 @@ bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int no
   FrictionResponse r;
   switch (side.friction) {
     case FrictionBranch::own:
-      r = friction.response(node, body, p, s, lambda, dlambda_dx);
+      r = friction.response(node, body, p, s, lambda, dlambda_dx, nodes.near(node));
       break;
     case FrictionBranch::stick:
       r = sticking_friction(friction.offset(node, body, p, s),
@@ -78,7 +78,7 @@ int predict_contact_set(const PatternMesh& pattern, const RigidBody& body,
     const Vec3 p = pattern.node_position(x, node);
     // The node's displacement: node_position reads its DoF values, here the increment's.
     const Vec3 dx = pattern.node_position(increment, node);
-    const SurfacePoint s = body.query(p);
+    const SurfacePoint s = nodes.query(body, node, p);
     const double lambda_bar = nodes.multiplier_N[node], kA = nodes.penalty_N_per_m[node];
     const double lambda = contact_multiplier_N(lambda_bar, kA, s.signed_distance_m);
     const double lambda_after = lambda_bar - kA * (s.signed_distance_m + s.gap_gradient.dot(dx));
