@@ -1,5 +1,7 @@
 #include "contact/penalty_contact.h"
 
+#include <cmath>
+
 namespace tightfit {
 
 double penalty_stiffness_Pa_per_m(double penalty_factor, double stiffness_scale_N_per_m,
@@ -12,6 +14,10 @@ Vec3 penalty_force_N(const SurfacePoint& s, double stiffness_Pa_per_m, double re
   return contact_multiplier_N(multiplier_N, stiffness_Pa_per_m * rest_area_m2,
                               s.signed_distance_m) *
          s.outward_normal;
+}
+
+double contact_damper_N_s_per_m(double damping_ratio, double penalty_N_per_m, double mass_kg) {
+  return 2.0 * damping_ratio * std::sqrt(penalty_N_per_m * mass_kg);
 }
 
 void apply_penalty_contact(const RigidBody& body, double stiffness_Pa_per_m,

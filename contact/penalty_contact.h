@@ -42,4 +42,10 @@ void apply_penalty_contact(const RigidBody& body, double stiffness_Pa_per_m,
 Vec3 penalty_force_N(const SurfacePoint& s, double stiffness_Pa_per_m, double rest_area_m2,
                      double multiplier_N = 0.0);
 
+// The damper along the normal of a vertex's contact spring: the force -c (v . n) n with
+// c = 2 zeta sqrt(kA m) (N s/m), so that a vertex of mass m on its spring kA (N/m) moving along
+// the unit normal n obeys m g'' + c g' + kA g = 0: damping ratio zeta, 1 critical. Motion along
+// the body (v . n = 0) is not damped.
+double contact_damper_N_s_per_m(double damping_ratio, double penalty_N_per_m, double mass_kg);
+
 }  // namespace tightfit

@@ -27,25 +27,27 @@ struct PredictedSide {
   }
 };
 
+// Each array holds this rank's nodes only, node PatternMesh::owned_nodes[k] at position k (on
+// one rank, every node at its own number): the rank that owns a node's DoFs assembles its contact.
 struct ContactNodes {
   std::vector<double> penalty_N_per_m;  // k_k w_k per node (w_k its positive nodal rest area)
   std::vector<double> multiplier_N;     // augmented-Lagrangian estimate per node, N
   // Coulomb friction's anchors per node, the tangential penalty of node k being the Problem's
   // tangential stiffness times w_k (inactive when the Problem's mu is 0).
   FrictionAnchors friction;
-  // Per node, the side of the contact and friction kinks a Newton step is solved on
+  // Per owned node, the side of the contact and friction kinks a Newton step is solved on
   // (contact_set_prediction.h). Empty: every node its own at the point assembled.
   std::vector<PredictedSide> predicted;
-  // Per node, the body's memory of its last query (RigidBody::query_near): a Newton iterate
-  // moves a node little, and a mesh body then searches only the few faces kept near it instead
-  // of its whole tree, with the tree's own answer. Only a cache, hence mutable.
+  // Per owned node, the body's memory of its last query (RigidBody::query_near): a Newton
+  // iterate moves a node little, and a mesh body then searches only the few faces kept near it
+  // instead of its whole tree, with the tree's own answer. Only a cache, hence mutable.
   mutable std::vector<NearFaces> near_faces;
 
-  // body.query(p) for node k, through its kept faces once near_faces is sized.
-  SurfacePoint query(const RigidBody& body, int node, const Vec3& p) const {
-    return near_faces.empty() ? body.query(p) : body.query_near(p, near_faces[node]);
+  // body.query(p) for the node at position k, through its kept faces once near_faces is sized.
+  SurfacePoint query(const RigidBody& body, int k, const Vec3& p) const {
+    return near_faces.empty() ? body.query(p) : body.query_near(p, near_faces[k]);
   }
-  NearFaces* near(int node) const { return near_faces.empty() ? nullptr : &near_faces[node]; }
+  NearFaces* near(int k) const { return near_faces.empty() ? nullptr : &near_faces[k]; }
 };
 
 // The rest edge length h_k of each node, m. A vertex: the mean rest length of the triangle

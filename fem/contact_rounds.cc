@@ -3,6 +3,8 @@
 #include "contact/penalty_contact.h"
 #include "fem/contact_set_prediction.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -24,28 +26,33 @@ std::string format_residuals(const std::vector<double>& values) {
 ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
                              const FemParameters& parameters)
     : pattern_(pattern), problem_(problem), parameters_(parameters) {
+  // Of every node, then kept for this rank's.
   const std::vector<double> area_m2 =
       nodal_rest_areas_m2(pattern.mesh, pattern.edge_index, parameters.element_degree);
-  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(
+  const std::vector<double> penalty_N_per_m = nodal_penalties_N_per_m(
       area_m2, parameters.penalty_factor * problem.law->stiffness_scale(), pattern.node_edge_m);
-  nodes_.friction =
-      FrictionAnchors(problem.friction_coefficient, problem.tangential_stiffness_Pa_per_m, area_m2);
-  nodes_.multiplier_N.assign(pattern.n_nodes(), 0.0);
-  nodes_.near_faces.resize(pattern.n_nodes());
+  std::vector<double> owned_area_m2;
+  for (const int node : pattern.owned_nodes) {
+    nodes_.penalty_N_per_m.push_back(penalty_N_per_m[node]);
+    owned_area_m2.push_back(area_m2[node]);
+  }
+  nodes_.friction = FrictionAnchors(problem.friction_coefficient,
+                                    problem.tangential_stiffness_Pa_per_m, owned_area_m2);
+  nodes_.multiplier_N.assign(pattern.n_owned_nodes(), 0.0);
+  nodes_.near_faces.resize(pattern.n_owned_nodes());
 }
 
-void ContactRounds::start_from(const dealii::Vector<double>& x) {
+void ContactRounds::start_from(const DofVector& x) {
   n_history_ = 0;
-  friction_force_N_.assign(pattern_.n_nodes(), Vec3::Zero());
+  friction_force_N_.assign(pattern_.n_owned_nodes(), Vec3::Zero());
   n_slipping_ = 0;
-  std::vector<Vec3> nodes(pattern_.n_nodes());
-  for (int node = 0; node < pattern_.n_nodes(); ++node)
-    nodes[node] = pattern_.node_position(x, node);
+  std::vector<Vec3> nodes(pattern_.n_owned_nodes());
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k)
+    nodes[k] = pattern_.node_position(x, pattern_.owned_nodes[k]);
   nodes_.friction.place(*problem_.body, nodes);
 }
 
-int ContactRounds::predict_contact_set(const dealii::Vector<double>& x,
-                                       const dealii::Vector<double>* increment) {
+int ContactRounds::predict_contact_set(const DofVector& x, const DofVector* increment) {
   if (!increment) {
     nodes_.predicted.clear();
     return 0;
@@ -53,27 +60,29 @@ int ContactRounds::predict_contact_set(const dealii::Vector<double>& x,
   return tightfit::predict_contact_set(pattern_, *problem_.body, x, *increment, nodes_);
 }
 
-void ContactRounds::commit_friction(const dealii::Vector<double>& x) {
+void ContactRounds::commit_friction(const DofVector& x) {
   if (!nodes_.friction.active()) return;
   n_slipping_ = 0;
-  for (int node = 0; node < pattern_.n_nodes(); ++node) {
-    const Vec3 p = pattern_.node_position(x, node);
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes[k]);
     const FrictionResponse r = nodes_.friction.response(
-        node, *problem_.body, p, nodes_.query(*problem_.body, node, p),
-        std::max(0.0, nodes_.multiplier_N[node]), Vec3::Zero(), nodes_.near(node));
-    nodes_.friction.commit(node, r);
-    friction_force_N_[node] = r.force_N;
+        k, *problem_.body, p, nodes_.query(*problem_.body, k, p),
+        std::max(0.0, nodes_.multiplier_N[k]), Vec3::Zero(), nodes_.near(k));
+    nodes_.friction.commit(k, r);
+    friction_force_N_[k] = r.force_N;
     n_slipping_ += r.slipping;
   }
+  n_slipping_ = dealii::Utilities::MPI::sum(n_slipping_, pattern_.comm);
 }
 
-void ContactRounds::secant_predictor(const LoadStep& step, dealii::Vector<double>& x) {
+void ContactRounds::secant_predictor(const LoadStep& step, DofVector& x) {
   if (n_history_ < 2) return;
   const double ratio = (step.alpha - history_alpha_[0]) / (history_alpha_[0] - history_alpha_[1]);
   // Only forward steps no longer than a few of the last: further out the secant misleads.
   if (!std::isfinite(ratio) || ratio <= 0.0 || ratio > 4.0) return;
   x = history_x_[0];
   x.add(ratio, history_x_[0], -ratio, history_x_[1]);
+  x.update_ghost_values();
   std::vector<double>& multiplier = nodes_.multiplier_N;
   for (std::size_t w = 0; w < multiplier.size(); ++w)
     multiplier[w] =
@@ -83,38 +92,42 @@ void ContactRounds::secant_predictor(const LoadStep& step, dealii::Vector<double
   // secant of two states that satisfy them (and the seams) satisfies them already.
 }
 
-void ContactRounds::contact_predictor(dealii::Vector<double>& x) const {
-  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+void ContactRounds::contact_predictor(DofVector& x) const {
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const int node = pattern_.owned_nodes[k];
     const Vec3 p = pattern_.node_position(x, node);
     const SurfacePoint s = problem_.body->query(p);
     // Nodes in contact at the last step (the multiplier predicted positive) go onto the
     // surface too: a penetration or gap left by the secant would cost kA g of residual.
-    if (s.signed_distance_m >= 0.0 && nodes_.multiplier_N[node] <= 0.0) continue;
+    if (s.signed_distance_m >= 0.0 && nodes_.multiplier_N[k] <= 0.0) continue;
     Vec3 move = s.closest_point_m - p;
     pattern_.node_constrained.remove_constrained(node, move);
     pattern_.set_node_position(x, node, p + move);
   }
+  pattern_.copy_seams(x);
 }
 
-int ContactRounds::update_multipliers(const dealii::Vector<double>& x) {
+int ContactRounds::update_multipliers(const DofVector& x) {
   max_penetration_m_ = 0.0;
   int n_active = 0;
-  for (int node = 0; node < pattern_.n_nodes(); ++node) {
-    const SurfacePoint s = nodes_.query(*problem_.body, node, pattern_.node_position(x, node));
-    nodes_.multiplier_N[node] = contact_multiplier_N(
-        nodes_.multiplier_N[node], nodes_.penalty_N_per_m[node], s.signed_distance_m);
-    if (nodes_.multiplier_N[node] > 0.0) {
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const SurfacePoint s =
+        nodes_.query(*problem_.body, k, pattern_.node_position(x, pattern_.owned_nodes[k]));
+    nodes_.multiplier_N[k] = contact_multiplier_N(nodes_.multiplier_N[k], nodes_.penalty_N_per_m[k],
+                                                  s.signed_distance_m);
+    if (nodes_.multiplier_N[k] > 0.0) {
       ++n_active;
       max_penetration_m_ = std::max(max_penetration_m_, std::abs(s.signed_distance_m));
     }
   }
-  return n_active;
+  // Every rank ends the rounds alike.
+  max_penetration_m_ = dealii::Utilities::MPI::max(max_penetration_m_, pattern_.comm);
+  return dealii::Utilities::MPI::sum(n_active, pattern_.comm);
 }
 
 ContactRoundsResult ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
                                          const NewtonSolver::Assembler& assemble,
-                                         NewtonSystem& system, dealii::Vector<double>& x,
-                                         NewtonLog& log) {
+                                         NewtonSystem& system, DofVector& x, NewtonLog& log) {
   // After a fallback, the solver asked for returns once the garment presses on the body: the
   // loose garment's tangent (singular at zero tension) is what defeats CG, and the first
   // contact step, where the tension starts from zero, is left to the solver that got there.

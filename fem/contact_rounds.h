@@ -33,38 +33,40 @@ class ContactRounds {
   ContactRounds(const PatternMesh& pattern, const Problem& problem,
                 const FemParameters& parameters);
 
+  // The contact state of this rank's nodes (PatternMesh::owned_nodes).
   const ContactNodes& nodes() const { return nodes_; }
-  // Largest penetration of a node in contact after the last round, m.
+  // Largest penetration of a node in contact after the last round, over every rank, m.
   double max_penetration_m() const { return max_penetration_m_; }
   // The positions were set from outside: the secant has nothing to extrapolate from, and the
   // friction anchors start at the nodes' closest points (where they stick when they touch).
-  void start_from(const dealii::Vector<double>& x);
-  // With friction: the tangential force on each node at the last accepted state (zero off
-  // contact), N, and how many nodes slipped there.
+  void start_from(const DofVector& x);
+  // With friction: the tangential force on each of this rank's nodes at the last accepted state
+  // (zero off contact), N, and how many nodes of every rank slipped there.
   const std::vector<Vec3>& friction_force_N() const { return friction_force_N_; }
   int n_slipping() const { return n_slipping_; }
   // NewtonSolver::ContactSetPredictor on these nodes (contact_set_prediction.h).
-  int predict_contact_set(const dealii::Vector<double>& x, const dealii::Vector<double>* increment);
+  int predict_contact_set(const DofVector& x, const DofVector* increment);
 
   // Predicts the start from x, runs the rounds (Newton on `assemble` at fixed multipliers),
   // and records the converged step for the next secant. Throws SolverError when the gap does
   // not close in 'Max augmented Lagrangian iterations' rounds or contact is lost.
   ContactRoundsResult solve(const LoadStep& step, NewtonSolver& newton,
                             const NewtonSolver::Assembler& assemble, NewtonSystem& system,
-                            dealii::Vector<double>& x, NewtonLog& log);
+                            DofVector& x, NewtonLog& log);
 
  private:
   // Secant extrapolation in alpha of the positions and multipliers of the last two converged
   // steps in contact (a continuation predictor: it changes the start, not the equilibrium).
-  void secant_predictor(const LoadStep& step, dealii::Vector<double>& x);
+  void secant_predictor(const LoadStep& step, DofVector& x);
   // Nodes the body has grown into, and those predicted in contact, start from their closest
-  // point on its surface, keeping constrained nodes on their planes.
-  void contact_predictor(dealii::Vector<double>& x) const;
-  // Uzawa's update at every node; returns the number of nodes in contact.
-  int update_multipliers(const dealii::Vector<double>& x);
+  // point on its surface, keeping constrained nodes on their planes (each rank its own nodes,
+  // then the seams' copies follow).
+  void contact_predictor(DofVector& x) const;
+  // Uzawa's update at this rank's nodes; returns the number of nodes in contact on every rank.
+  int update_multipliers(const DofVector& x);
   // Keeps each node's anchor of the accepted state x (after update_multipliers, whose
   // multipliers are the normal forces x was in equilibrium with) and its friction force.
-  void commit_friction(const dealii::Vector<double>& x);
+  void commit_friction(const DofVector& x);
 
   const PatternMesh& pattern_;
   const Problem& problem_;
@@ -72,10 +74,10 @@ class ContactRounds {
   ContactNodes nodes_;
   double max_penetration_m_ = 0.0;
   bool had_contact_ = false;
-  // The last two converged steps in contact (alpha, DoF positions, multipliers).
+  // The last two converged steps in contact (alpha, DoF positions, this rank's multipliers).
   int n_history_ = 0;
   std::array<double, 2> history_alpha_{};
-  std::array<dealii::Vector<double>, 2> history_x_;
+  std::array<DofVector, 2> history_x_;
   std::array<std::vector<double>, 2> history_multiplier_N_;
   std::vector<Vec3> friction_force_N_;
   int n_slipping_ = 0;

@@ -34,19 +34,18 @@
 
 namespace tightfit {
 
-// The contact and friction force on `node` at p on the sides nodes.predicted holds for it (its
-// own at p where that is empty or 0), and -d(force)/dx when `with_tangent`: exact, or with the
-// contact's part symmetrised when `symmetric_contact` (contact/nodal_contact.h). Returns false
-// where the node feels neither.
-bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int node, const Vec3& p,
+// The contact and friction force on owned node k (pattern.owned_nodes[k]) at p on the sides
+// nodes.predicted holds for it (its own at p where that is empty or 0), and -d(force)/dx when
+// `with_tangent`: exact, or with the contact's part symmetrised when `symmetric_contact`
+// (contact/nodal_contact.h). Returns false where the node feels neither.
+bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int k, const Vec3& p,
                         bool with_tangent, bool symmetric_contact, Vec3& force_N,
                         Mat3& stiffness_N_per_m);
 
-// Sets nodes.predicted for the Newton step `increment` from x (above). Returns how many nodes'
-// contact side or friction branch differ from those nodes.predicted held before (0: the step was
-// solved on the sides it predicts).
-int predict_contact_set(const PatternMesh& pattern, const RigidBody& body,
-                        const dealii::Vector<double>& x, const dealii::Vector<double>& increment,
-                        ContactNodes& nodes);
+// Sets nodes.predicted of this rank's nodes for the Newton step `increment` from x (above).
+// Returns how many nodes' contact side or friction branch, on every rank, differ from those
+// nodes.predicted held before (0: the step was solved on the sides it predicts); collective.
+int predict_contact_set(const PatternMesh& pattern, const RigidBody& body, const DofVector& x,
+                        const DofVector& increment, ContactNodes& nodes);
 
 }  // namespace tightfit

@@ -98,10 +98,9 @@ class FemBackend::Implementation {
                 comm_),
         contact_(pattern_, problem_, parameters) {
     if (parameters.max_contact_set_predictions > 0)
-      newton_.set_contact_set_predictor(
-          [this](const dealii::Vector<double>& x, const dealii::Vector<double>* increment) {
-            return contact_.predict_contact_set(x, increment);
-          });
+      newton_.set_contact_set_predictor([this](const DofVector& x, const DofVector* increment) {
+        return contact_.predict_contact_set(x, increment);
+      });
     // Start flat in the layout plane until the caller places the garment.
     const SimulationMesh& mesh = *problem.mesh;
     std::vector<Vec3> flat(mesh.n_vertices);
@@ -116,7 +115,7 @@ class FemBackend::Implementation {
       throw std::invalid_argument("fem backend: set_positions needs one position per vertex");
     x_ = pattern_.dof_positions(positions_m);
     contact_.start_from(x_);
-    build_constraints_and_system(pattern_, problem_, x_, comm_, system_);
+    build_constraints_and_system(pattern_, problem_, positions_m, comm_, system_);
     // A new matrix: its pattern may differ, so the next solve analyses it afresh.
     newton_.pattern_changed();
   }
@@ -132,7 +131,7 @@ class FemBackend::Implementation {
   NewtonSolver newton_;
   ContactRounds contact_;
   NewtonSystem system_;
-  dealii::Vector<double> x_;  // every DoF on every rank: the current positions, m
+  DofVector x_;  // this rank's DoFs and ghosts: the current positions, m
   FemSurfaceOutput output_;
   NewtonLog log_;  // of the last step, kept after a failure
 };
@@ -144,17 +143,17 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   StepReport report;
   report.tolerance_N = newton_.tolerance_N();
   NewtonLog& log = log_ = NewtonLog{};
-  const NewtonSolver::Assembler assemble = [this, &step](const dealii::Vector<double>& x,
-                                                         bool with_tangent) {
+  const NewtonSolver::Assembler assemble = [this, &step](const DofVector& x, bool with_tangent) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
                        step.gravity_on, system_);
   };
   const ContactRoundsResult rounds = contact_.solve(step, newton_, assemble, system_, x_, log);
   report.iterations = rounds.newton_iterations;
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  output_ = surface_output(pattern_, assembly_, *problem_.body, x_, contact_.nodes().multiplier_N,
+  output_ = surface_output(pattern_, assembly_, *problem_.body, x_,
+                           pattern_.gather_nodes(contact_.nodes().multiplier_N),
                            step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{},
-                           contact_.friction_force_N());
+                           pattern_.gather_nodes(contact_.friction_force_N()));
 
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.rounds.size()
@@ -210,8 +209,8 @@ std::vector<double> FemBackend::contact_traction_Pa() const {
   return impl_->output_.contact_traction_Pa;
 }
 
-const std::vector<double>& FemBackend::nodal_contact_force_N() const {
-  return impl_->contact_.nodes().multiplier_N;
+std::vector<double> FemBackend::nodal_contact_force_N() const {
+  return impl_->pattern_.gather_nodes(impl_->contact_.nodes().multiplier_N);
 }
 
 double FemBackend::max_penetration_m() const {
@@ -229,10 +228,9 @@ void FemBackend::linearise(const std::vector<Vec3>& node_positions_m, Eigen::Vec
 }
 
 std::vector<Vec3> FemBackend::node_positions(const std::vector<Vec3>& vertex_positions_m) const {
-  const dealii::Vector<double> x = impl_->pattern_.dof_positions(vertex_positions_m);
-  std::vector<Vec3> nodes(impl_->pattern_.n_nodes());
-  for (int node = 0; node < impl_->pattern_.n_nodes(); ++node)
-    nodes[node] = impl_->pattern_.node_position(x, node);
+  std::vector<Vec3> nodes = vertex_positions_m;
+  for (const auto& ends : impl_->pattern_.edge_ends)
+    nodes.push_back(0.5 * (vertex_positions_m[ends[0]] + vertex_positions_m[ends[1]]));
   return nodes;
 }
 

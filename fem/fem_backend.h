@@ -48,8 +48,8 @@ class FemBackend final : public Backend {
   std::vector<double> contact_traction_Pa() const;
   // The contact multipliers of every node (vertices, then with degree 2 the edge midpoints)
   // after the last step, N: the solver's own nodal contact forces, before any traction is
-  // recovered from them.
-  const std::vector<double>& nodal_contact_force_N() const;
+  // recovered from them. Collective (each rank keeps its own nodes').
+  std::vector<double> nodal_contact_force_N() const;
   // Largest penetration of a vertex in contact after the last step, m.
   double max_penetration_m() const;
   // Residual-force history (largest component, N) of every Newton iteration of the last step.

@@ -38,32 +38,42 @@ void constrain_directions(const DofTriple& dofs, const std::vector<Vec3>& direct
 }  // namespace
 
 void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
-                                  const dealii::Vector<double>& x, MPI_Comm comm,
+                                  const std::vector<Vec3>& positions_m, MPI_Comm comm,
                                   NewtonSystem& system) {
   dealii::AffineConstraints<double>& constraints = system.constraints;
+  // Only the constraints of this rank's relevant DoFs: its cells' DoFs and their nodes' copies
+  // (a node's copies are relevant together, so a seam or a direction never reaches a DoF the
+  // rank does not keep). Assembly, the sparsity pattern and distributing an increment read no
+  // others.
+  const dealii::IndexSet& relevant = pattern.relevant_dofs;
   constraints.clear();
+  constraints.reinit(relevant);
   // Seams: every copy of a node (a welded vertex, or the midpoint of a seam edge) follows
   // the copy that carries it.
-  for (const std::vector<DofTriple>& copies : pattern.node_copies)
+  for (const std::vector<DofTriple>& copies : pattern.node_copies) {
+    if (copies.size() < 2 || !relevant.is_element(copies[0][0])) continue;
     for (std::size_t k = 1; k < copies.size(); ++k)
       for (int c = 0; c < 3; ++c) {
         constraints.add_line(copies[k][c]);
         constraints.add_entry(copies[k][c], copies[0][c], 1.0);
       }
+  }
   // Constrained nodes keep their coordinates along their constrained directions.
   for (int node = 0; node < pattern.n_nodes(); ++node)
-    if (pattern.node_constrained.constrained(node))
+    if (pattern.node_constrained.constrained(node) &&
+        relevant.is_element(pattern.node_copies[node].front()[0]))
       constrain_directions(pattern.node_copies[node].front(),
                            pattern.node_constrained.directions(node), constraints);
-  const RigidMotionPin pin =
-      rigid_motion_pin(*problem.body, pattern.vertex_positions(x), pattern.node_constrained,
-                       problem.friction_coefficient > 0.0);
-  for (const RigidMotionPin::Pin& p : pin.pins)
-    constrain_directions(pattern.vertex_dofs[pattern.master[p.vertex]], p.directions, constraints);
+  const RigidMotionPin pin = rigid_motion_pin(*problem.body, positions_m, pattern.node_constrained,
+                                              problem.friction_coefficient > 0.0);
+  for (const RigidMotionPin::Pin& p : pin.pins) {
+    const DofTriple& dofs = pattern.vertex_dofs[pattern.master[p.vertex]];
+    if (relevant.is_element(dofs[0])) constrain_directions(dofs, p.directions, constraints);
+  }
   constraints.close();
 
-  // Every rank holds the whole mesh: the pattern is built from all cells, and each rank
-  // stores only its own rows (entries in other rows are dropped as they are added).
+  // Each rank stores only its own rows (entries in other rows are dropped as they are added),
+  // from its stored cells: its own and those that add to its rows.
   {
     dealii::DynamicSparsityPattern sparsity(pattern.n_dofs(), pattern.n_dofs(), pattern.owned_dofs);
     std::vector<GlobalDof> dofs;

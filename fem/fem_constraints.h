@@ -10,10 +10,10 @@
 
 namespace tightfit {
 
-// Rebuilds system.constraints for the garment at DoF positions x (the pin is chosen there),
-// then the tangent's pattern and the vectors on the rank's own DoFs.
+// Rebuilds system.constraints for the garment with its welded vertices at `positions_m` (the
+// pin is chosen there), then the tangent's pattern and the vectors on the rank's own DoFs.
 void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
-                                  const dealii::Vector<double>& x, MPI_Comm comm,
+                                  const std::vector<Vec3>& positions_m, MPI_Comm comm,
                                   NewtonSystem& system);
 
 }  // namespace tightfit

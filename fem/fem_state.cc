@@ -11,7 +11,7 @@ namespace tightfit {
 namespace {
 
 void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& assembly,
-                           const RigidBody& body, const dealii::Vector<double>& x,
+                           const RigidBody& body, const DofVector& x,
                            const std::vector<double>& multiplier_N,
                            const std::vector<Vec3>& friction_force_N, FemSurfaceOutput& out) {
   const SimulationMesh& mesh = pattern.mesh;
@@ -55,7 +55,7 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
 // lessens it where it presses, n_body . g < 0). That load is recovered as a second traction
 // t_g and the internal force becomes -(t_g A_v) n_v.
 void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
-                                  const dealii::Vector<double>& x,
+                                  const DofVector& x, const dealii::Vector<double>& whole_x,
                                   const std::vector<double>& multiplier_N,
                                   const std::vector<Vec3>& gravity_load_N, FemSurfaceOutput& out) {
   const SimulationMesh& mesh = pattern.mesh;
@@ -76,7 +76,7 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
       Mat32 F = Mat32::Zero();
       for (unsigned int i = 0; i < n_local; ++i)
         F.row(pattern.local_component[i]) +=
-            x[pattern.cell_dofs[cell][i]] *
+            x(pattern.cell_dofs[cell][i]) *
             pattern.cell_grad_grain[cell][q * n_element_nodes + pattern.local_node[i]].transpose();
       const double grain_area_m2 =
           pattern.cell_JxW_m2[cell][q] * pattern.cell_grain_area_ratio[cell];
@@ -109,7 +109,7 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
     std::vector<double> garment_load_N = contact_load_N;
     for (int k = 0; k < pattern.n_nodes(); ++k)
       garment_load_N[k] +=
-          gravity_load_N[k].dot(body.query(pattern.node_position(x, k)).outward_normal);
+          gravity_load_N[k].dot(body.query(pattern.node_position(whole_x, k)).outward_normal);
     garment_traction = recover_traction_Pa(n, quadrature, hat_loads(garment_load_N));
   }
 
@@ -143,16 +143,17 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
 }  // namespace
 
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
-                                const RigidBody& body, const dealii::Vector<double>& x,
+                                const RigidBody& body, const DofVector& x,
                                 const std::vector<double>& multiplier_N,
                                 const std::vector<Vec3>& gravity_load_N,
                                 const std::vector<Vec3>& friction_force_N) {
   FemSurfaceOutput out;
-  out.state.positions_m = pattern.vertex_positions(x);
+  const dealii::Vector<double> whole_x = pattern.gather(x);
+  out.state.positions_m = pattern.vertex_positions(whole_x);
   if (pattern.element_degree == 1)
     fill_from_multipliers(pattern, assembly, body, x, multiplier_N, friction_force_N, out);
   else
-    fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, out);
+    fill_from_recovered_traction(pattern, body, x, whole_x, multiplier_N, gravity_load_N, out);
   return out;
 }
 

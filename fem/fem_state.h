@@ -25,8 +25,10 @@ struct FemSurfaceOutput {
 // gravity); degree 2 needs it to tell the garment's own force from the contact force.
 // `friction_force_N`: per node, the tangential contact force (degree 1 only; zero without
 // friction): it joins the contact force, where the extractor reads it as friction traction.
+// `x` is this rank's part of the positions, `multiplier_N` and `friction_force_N` every node's
+// (PatternMesh::gather_nodes): every rank builds the whole output.
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
-                                const RigidBody& body, const dealii::Vector<double>& x,
+                                const RigidBody& body, const DofVector& x,
                                 const std::vector<double>& multiplier_N,
                                 const std::vector<Vec3>& gravity_load_N,
                                 const std::vector<Vec3>& friction_force_N);

@@ -13,15 +13,15 @@ MembraneAssembly::MembraneAssembly(const PatternMesh& pattern, const Problem& pr
                                    bool symmetric_tangent, MPI_Comm comm)
     : pattern_(pattern), problem_(problem), symmetric_tangent_(symmetric_tangent), comm_(comm) {}
 
-bool MembraneAssembly::node_contact(int node, const Vec3& p, const ContactNodes& contact,
+bool MembraneAssembly::node_contact(int k, const Vec3& p, const ContactNodes& contact,
                                     bool with_tangent, Vec3& force_N,
                                     Mat3& stiffness_N_per_m) const {
-  return model_node_contact(*problem_.body, contact, node, p, with_tangent, symmetric_tangent_,
+  return model_node_contact(*problem_.body, contact, k, p, with_tangent, symmetric_tangent_,
                             force_N, stiffness_N_per_m);
 }
 
-void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<double>& x,
-                                   Eigen::VectorXd& gradient, Eigen::MatrixXd* hessian) const {
+void MembraneAssembly::cell_kernel(unsigned int cell, const DofVector& x, Eigen::VectorXd& gradient,
+                                   Eigen::MatrixXd* hessian) const {
   const unsigned int n_local = pattern_.n_local_dofs();
   const unsigned int n_element_nodes = pattern_.n_element_nodes();
   const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs[cell];
@@ -35,7 +35,7 @@ void MembraneAssembly::cell_kernel(unsigned int cell, const dealii::Vector<doubl
     Mat32 F = Mat32::Zero();
     for (unsigned int i = 0; i < n_local; ++i)
       F.row(pattern_.local_component[i]) +=
-          x[dofs[i]] * grad_grain[pattern_.local_node[i]].transpose();
+          x(dofs[i]) * grad_grain[pattern_.local_node[i]].transpose();
     add_membrane_point(*problem_.law, grad_grain, F, pattern_.cell_JxW_m2[cell][q], gradient,
                        hessian);
   }
@@ -55,7 +55,7 @@ std::vector<Vec3> MembraneAssembly::gravity_load_N() const {
   return load;
 }
 
-void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNodes& contact,
+void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
                                 double tangent_shift_N_per_m, bool with_tangent, bool gravity_on,
                                 NewtonSystem& system) const {
   const unsigned int n_local = pattern_.n_local_dofs();
@@ -92,12 +92,12 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
   dealii::FullMatrix<double> vertex_matrix(3, 3);
   dealii::Vector<double> vertex_rhs(3);
   std::vector<GlobalDof> vertex_dof_list(3);
-  for (int node = 0; node < pattern_.n_nodes(); ++node) {
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const int node = pattern_.owned_nodes[k];
     const DofTriple& d = pattern_.node_copies[node].front();
-    if (!pattern_.owned_dofs.is_element(d[0])) continue;
     Vec3 force_N;
     Mat3 stiffness_N_per_m;
-    const bool touching = node_contact(node, pattern_.node_position(x, node), contact, with_tangent,
+    const bool touching = node_contact(k, pattern_.node_position(x, node), contact, with_tangent,
                                        force_N, stiffness_N_per_m);
     if (!touching && tangent_shift_N_per_m <= 0.0) continue;
     for (int i = 0; i < 3; ++i) {
@@ -116,7 +116,7 @@ void MembraneAssembly::assemble(const dealii::Vector<double>& x, const ContactNo
   system.rhs.compress(dealii::VectorOperation::add);
 }
 
-std::vector<Vec3> MembraneAssembly::internal_force_N(const dealii::Vector<double>& x) const {
+std::vector<Vec3> MembraneAssembly::internal_force_N(const DofVector& x) const {
   dealii::Vector<double> gradient_full(pattern_.n_dofs());
   Eigen::VectorXd gradient;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
@@ -140,7 +140,9 @@ void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
   const int n = pattern_.n_nodes();
   if (static_cast<int>(node_positions_m.size()) != n)
     throw std::invalid_argument("fem backend: linearise() needs one position per node");
-  dealii::Vector<double> x(pattern_.n_dofs());
+  if (pattern_.n_owned_nodes() != n)
+    throw std::logic_error("fem backend: linearise() runs on one MPI rank only");
+  DofVector x = pattern_.dof_vector();
   // DoF -> row 3 node + c of the node it carries (every copy of a node shares its rows).
   std::vector<int> dof_row(pattern_.n_dofs(), -1);
   for (int node = 0; node < n; ++node) {
@@ -164,6 +166,7 @@ void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
         tangent_N_per_m(row[i], row[j]) += hessian(a, pattern_.node_major(j));
     }
   }
+  // Serial: the owned nodes are every node, k the node's own number.
   for (int node = 0; node < n; ++node) {
     Vec3 force_N;
     Mat3 stiffness_N_per_m;

@@ -23,9 +23,8 @@ class MembraneAssembly {
   // system.rhs = -R(x), constrained; system.tangent = dR/dx when with_tangent. The tangent
   // of every node's contact gets `tangent_shift_N_per_m` on its diagonal (zero: nodes out of
   // contact are skipped). With gravity_on, R also loses the garment's weight (gravity_load_N).
-  void assemble(const dealii::Vector<double>& x, const ContactNodes& contact,
-                double tangent_shift_N_per_m, bool with_tangent, bool gravity_on,
-                NewtonSystem& system) const;
+  void assemble(const DofVector& x, const ContactNodes& contact, double tangent_shift_N_per_m,
+                bool with_tangent, bool gravity_on, NewtonSystem& system) const;
 
   // The garment's weight as consistent nodal loads, per node, N:
   //   f_k = g int N_k rho_A dA_rest,
@@ -38,7 +37,7 @@ class MembraneAssembly {
 
   // The membrane's internal force (minus the energy gradient) on each welded vertex, N,
   // summed over the vertex's copies (the seam is one vertex); every rank gets all of it.
-  std::vector<Vec3> internal_force_N(const dealii::Vector<double>& x) const;
+  std::vector<Vec3> internal_force_N(const DofVector& x) const;
 
   // Serial, for tests: R and dR/dx on the nodes (3n, node-major) at `node_positions_m`,
   // without constraints; every copy of a seam node takes its node's position.
@@ -47,17 +46,17 @@ class MembraneAssembly {
 
  private:
   // Node-major energy gradient (and Hessian) of one cell, from the DoF values x.
-  void cell_kernel(unsigned int cell, const dealii::Vector<double>& x, Eigen::VectorXd& gradient,
+  void cell_kernel(unsigned int cell, const DofVector& x, Eigen::VectorXd& gradient,
                    Eigen::MatrixXd* hessian) const;
 
   // rho_A g: the weight per unit rest area, N/m^2 (zero without a fabric).
   Vec3 weight_per_rest_area() const;
 
-  // The contact force on a node at p (normal, and with friction the return mapping from the
-  // anchors of the last accepted state), on the sides of the contact and friction kinks the
-  // step's prediction holds (contact_set_prediction.h), and, with_tangent, minus its derivative.
-  // Returns false when the node is out of contact (no force, no stiffness).
-  bool node_contact(int node, const Vec3& p, const ContactNodes& contact, bool with_tangent,
+  // The contact force on owned node k (pattern.owned_nodes[k]) at p (normal, and with friction
+  // the return mapping from the anchors of the last accepted state), on the sides of the contact
+  // and friction kinks the step's prediction holds (contact_set_prediction.h), and, with_tangent,
+  // minus its derivative. Returns false when the node is out of contact (no force, no stiffness).
+  bool node_contact(int k, const Vec3& p, const ContactNodes& contact, bool with_tangent,
                     Vec3& force_N, Mat3& stiffness_N_per_m) const;
 
   const PatternMesh& pattern_;

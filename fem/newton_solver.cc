@@ -5,6 +5,7 @@
 #include "core/residual_history.h"
 
 #include <petscmat.h>
+#include <petscvec.h>
 
 #include <algorithm>
 #include <cmath>
@@ -61,9 +62,9 @@ double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
   return dealii::Utilities::MPI::max(largest, comm_);
 }
 
-std::string NewtonSolver::failure_details(const NewtonSystem& system,
-                                          const dealii::Vector<double>& x,
+std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofVector& x_owned,
                                           const NewtonLog& log) const {
+  const dealii::Vector<double> x = pattern_.gather(x_owned);
   dealii::Vector<double> rhs(pattern_.n_dofs());
   for (const auto i : pattern_.owned_dofs) rhs[i] = system.rhs(i);
   MPI_Allreduce(MPI_IN_PLACE, rhs.begin(), static_cast<int>(rhs.size()), MPI_DOUBLE, MPI_SUM,
@@ -90,7 +91,7 @@ void NewtonSolver::fail(const LoadStep& step, const std::string& what, double re
   throw_step_failure(step, what, residual_N, tolerance_N(), details);
 }
 
-int NewtonSolver::solve_linear_system(const LoadStep& step, const dealii::Vector<double>& x,
+int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
                                       NewtonSystem& system, NewtonLog& log) {
   try {
     // GAMG's rigid motions: a DoF's coordinate is its own position value, since the DoFs are
@@ -98,7 +99,7 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const dealii::Vector
     dealii::PETScWrappers::MPI::Vector coordinates;
     if (linear_solver_->needs_node_coordinates() && pattern_.dofs_in_node_blocks) {
       coordinates.reinit(pattern_.owned_dofs, comm_);
-      for (const GlobalDof i : pattern_.owned_dofs) coordinates(i) = x[i];
+      for (const GlobalDof i : pattern_.owned_dofs) coordinates(i) = x(i);
       coordinates.compress(dealii::VectorOperation::insert);
     }
     const LinearSolveResult result = linear_solver_->solve(
@@ -114,20 +115,26 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const dealii::Vector
   }
 }
 
-dealii::Vector<double> NewtonSolver::gather_increment(NewtonSystem& system) const {
-  dealii::Vector<double> full(pattern_.n_dofs());
-  for (const auto i : pattern_.owned_dofs) full[i] = system.increment(i);
-  MPI_Allreduce(MPI_IN_PLACE, full.begin(), static_cast<int>(full.size()), MPI_DOUBLE, MPI_SUM,
-                comm_);
-  system.constraints.distribute(full);
-  return full;
+void NewtonSolver::ghosted_increment(NewtonSystem& system, DofVector& increment) const {
+  // The seam copies and constrained directions of this rank's DoFs take their values from the
+  // DoFs they follow (other ranks' among them fetched by deal.II); the solver zeroes the vector
+  // before its next solve, so it may be changed here.
+  system.constraints.distribute(system.increment);
+  if (increment.get_partitioner() != pattern_.partitioner) increment.reinit(pattern_.partitioner);
+  // Both hold this rank's DoFs, one contiguous range, in ascending order.
+  const PetscScalar* values = nullptr;
+  VecGetArrayRead(system.increment, &values);
+  for (unsigned int i = 0; i < increment.locally_owned_size(); ++i)
+    increment.local_element(i) = values[i];
+  VecRestoreArrayRead(system.increment, &values);
+  increment.update_ghost_values();
 }
 
 // The trial point of a full step is assembled with its tangent: when the step is accepted (the
 // usual case near the solution) that assembly is the next iteration's, so a Newton iteration
 // costs one assembly and one solve.
 int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system,
-                        dealii::Vector<double>& x, NewtonLog& log) {
+                        DofVector& x, NewtonLog& log) {
   const double tolerance = tolerance_N();
   const double mean_edge_m = pattern_.mean_edge_m;
   std::vector<double>& history_N = log.residual_N;
@@ -161,7 +168,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
     // until the line search succeeds and shrinking tenfold after each success. The residual is
     // untouched, so the converged state is not biased.
-    dealii::Vector<double> trial(x), increment;
+    DofVector trial(x), increment;
     bool tangent_current = false;
     double step_taken = 0.0;
     // A step on the predicted contact set whose line search fails is tried again on the set at
@@ -182,7 +189,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         if (escalation > 0 || reassemble || shift_N_per_m > 0.0)
           MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
         log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
-        increment = gather_increment(system);
+        ghosted_increment(system, increment);
         // The step solved again on the contact set it reaches (contact_set_prediction.h), until
         // the set it was solved with is the one it predicts. The model's residual at x is not
         // R(x): the assembly at x is redone, on every node's own side, before it is read again.
@@ -194,7 +201,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
             assemble(x, true);
             if (shift_N_per_m > 0.0) MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
             log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
-            increment = gather_increment(system);
+            ghosted_increment(system, increment);
             ++log.n_set_predictions;
             predicted = true;
           }

@@ -37,12 +37,11 @@ struct NewtonLog {
 class NewtonSolver {
  public:
   // Fills system.rhs = -R(x) (constrained), and system.tangent = dR/dx when asked.
-  using Assembler = std::function<void(const dealii::Vector<double>& x, bool with_tangent)>;
+  using Assembler = std::function<void(const DofVector& x, bool with_tangent)>;
   // Given x and Newton's increment, sets the contact set the next assembly takes for the step's
   // model and returns how many nodes changed side (fem/contact_set_prediction.h); given a null
   // increment, returns every node to its own side at the point assembled.
-  using ContactSetPredictor =
-      std::function<int(const dealii::Vector<double>& x, const dealii::Vector<double>* increment)>;
+  using ContactSetPredictor = std::function<int(const DofVector& x, const DofVector* increment)>;
 
   // Y = stiffness_scale_N_per_m, h = pattern.mean_edge_m. The stop rule's force is 'Residual
   // tolerance' times Y h or, when 'Relative tolerance' is set, that times tension_scale_N, the
@@ -68,8 +67,8 @@ class NewtonSolver {
 
   // Iterates from x until max |R| <= tolerance_N(); returns the iterations taken. Throws
   // SolverError (throw_step_failure) on a non-finite residual or too many iterations.
-  int solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system,
-            dealii::Vector<double>& x, NewtonLog& log);
+  int solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system, DofVector& x,
+            NewtonLog& log);
 
  private:
   // The stop rule's size of rhs over every rank, N: the largest |rhs_i| h / h_k(i), or the rms
@@ -77,14 +76,14 @@ class NewtonSolver {
   double scaled_residual_N(const NewtonSystem& system) const;
   // Where the residual at x sits (contact/residual_location.h) and the history of the step's
   // iterations, for the message of a failed step.
-  std::string failure_details(const NewtonSystem& system, const dealii::Vector<double>& x,
+  std::string failure_details(const NewtonSystem& system, const DofVector& x,
                               const NewtonLog& log) const;
   // Solves tangent * increment = rhs at positions x; returns the Krylov iterations (0 for
   // direct).
-  int solve_linear_system(const LoadStep& step, const dealii::Vector<double>& x,
-                          NewtonSystem& system, NewtonLog& log);
-  // The increment on every DoF of every rank, constraints distributed.
-  dealii::Vector<double> gather_increment(NewtonSystem& system) const;
+  int solve_linear_system(const LoadStep& step, const DofVector& x, NewtonSystem& system,
+                          NewtonLog& log);
+  // The increment on this rank's DoFs and ghosts, constraints distributed.
+  void ghosted_increment(NewtonSystem& system, DofVector& increment) const;
   [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N,
                          const std::string& details = "") const;
 

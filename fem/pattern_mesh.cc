@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace tightfit {
 
@@ -61,6 +62,7 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
     build_nodes(dof_handler);
     build_cell_quadrature(dof_handler, to_grain_gradient);
   }
+  build_relevant_dofs();
   dofs_in_node_blocks = owned_dofs.is_contiguous() && owned_dofs.n_elements() % 3 == 0 &&
                         (owned_dofs.n_elements() == 0 || owned_dofs.nth_index_in_set(0) % 3 == 0);
   for (const auto& copies : node_copies)
@@ -251,30 +253,90 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
   cell_node_rest_area_m2.shrink_to_fit();
 }
 
-Vec3 PatternMesh::vertex_position(const dealii::Vector<double>& x, int unwelded) const {
-  const DofTriple& d = vertex_dofs[unwelded];
-  return Vec3(x[d[0]], x[d[1]], x[d[2]]);
+void PatternMesh::build_relevant_dofs() {
+  std::vector<int> dof_node(n_dofs(), -1);
+  for (int node = 0; node < n_nodes(); ++node)
+    for (const DofTriple& d : node_copies[node])
+      for (const GlobalDof i : d) dof_node[i] = node;
+  std::vector<char> relevant_node(n_nodes(), 0);
+  for (int cell = 0; cell < n_cells(); ++cell)
+    for (const GlobalDof i : cell_dofs[cell]) relevant_node[dof_node[i]] = 1;
+  std::vector<GlobalDof> relevant;
+  owned_nodes.clear();
+  seam_nodes_.clear();
+  for (int node = 0; node < n_nodes(); ++node) {
+    if (!relevant_node[node]) continue;
+    for (const DofTriple& d : node_copies[node])
+      relevant.insert(relevant.end(), d.begin(), d.end());
+    if (owned_dofs.is_element(node_copies[node].front()[0])) owned_nodes.push_back(node);
+    for (std::size_t k = 1; k < node_copies[node].size(); ++k)
+      if (owned_dofs.is_element(node_copies[node][k][0])) {
+        seam_nodes_.push_back(node);
+        break;
+      }
+  }
+  std::sort(relevant.begin(), relevant.end());
+  relevant_dofs = dealii::IndexSet(n_dofs());
+  relevant_dofs.add_indices(relevant.begin(), relevant.end());
+  relevant_dofs.add_indices(owned_dofs);
+  relevant_dofs.compress();
+  partitioner =
+      std::make_shared<const dealii::Utilities::MPI::Partitioner>(owned_dofs, relevant_dofs, comm);
 }
 
-Vec3 PatternMesh::node_position(const dealii::Vector<double>& x, int node) const {
-  const DofTriple& d = node_copies[node].front();
-  return Vec3(x[d[0]], x[d[1]], x[d[2]]);
-}
-
-void PatternMesh::set_node_position(dealii::Vector<double>& x, int node, const Vec3& p) const {
+void PatternMesh::set_node_position(DofVector& x, int node, const Vec3& p) const {
   for (const DofTriple& d : node_copies[node])
-    for (int c = 0; c < 3; ++c) x[d[c]] = p[c];
+    if (relevant_dofs.is_element(d[0]))
+      for (int c = 0; c < 3; ++c) x(d[c]) = p[c];
 }
 
-dealii::Vector<double> PatternMesh::dof_positions(const std::vector<Vec3>& positions_m) const {
-  dealii::Vector<double> x(n_dofs());
+void PatternMesh::copy_seams(DofVector& x) const {
+  x.update_ghost_values();
+  for (const int node : seam_nodes_) {
+    const DofTriple& carrier = node_copies[node].front();
+    for (std::size_t k = 1; k < node_copies[node].size(); ++k)
+      if (owned_dofs.is_element(node_copies[node][k][0]))
+        for (int c = 0; c < 3; ++c) x(node_copies[node][k][c]) = x(carrier[c]);
+  }
+  x.update_ghost_values();
+}
+
+DofVector PatternMesh::dof_positions(const std::vector<Vec3>& positions_m) const {
+  DofVector x = dof_vector();
   for (int w = 0; w < mesh.n_vertices; ++w) set_node_position(x, w, positions_m[w]);
   // Midpoints start on their chords; the contact predictor lifts those inside the body.
   for (std::size_t e = 0; e < edge_ends.size(); ++e)
     set_node_position(x, mesh.n_vertices + static_cast<int>(e),
                       0.5 * (positions_m[edge_ends[e][0]] + positions_m[edge_ends[e][1]]));
+  x.update_ghost_values();
   return x;
 }
+
+dealii::Vector<double> PatternMesh::gather(const DofVector& x) const {
+  dealii::Vector<double> whole(n_dofs());
+  for (const GlobalDof i : owned_dofs) whole[i] = x(i);
+  MPI_Allreduce(MPI_IN_PLACE, whole.begin(), static_cast<int>(whole.size()), MPI_DOUBLE, MPI_SUM,
+                comm);
+  return whole;
+}
+
+template <typename T>
+std::vector<T> PatternMesh::gather_nodes(const std::vector<T>& owned_values) const {
+  static_assert(sizeof(T) % sizeof(double) == 0, "gather_nodes: values of doubles only");
+  T zero;
+  if constexpr (std::is_same_v<T, double>)
+    zero = 0.0;
+  else
+    zero = T::Zero();
+  std::vector<T> whole(n_nodes(), zero);
+  for (int k = 0; k < n_owned_nodes(); ++k) whole[owned_nodes[k]] = owned_values[k];
+  MPI_Allreduce(MPI_IN_PLACE, reinterpret_cast<double*>(whole.data()),
+                static_cast<int>(whole.size() * (sizeof(T) / sizeof(double))), MPI_DOUBLE, MPI_SUM,
+                comm);
+  return whole;
+}
+template std::vector<double> PatternMesh::gather_nodes(const std::vector<double>&) const;
+template std::vector<Vec3> PatternMesh::gather_nodes(const std::vector<Vec3>&) const;
 
 std::vector<Vec3> PatternMesh::vertex_positions(const dealii::Vector<double>& x) const {
   std::vector<Vec3> positions(mesh.n_vertices);

@@ -18,21 +18,29 @@
 #include "fem/cell_table.h"
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_fe.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace tightfit {
 
 using GlobalDof = dealii::types::global_dof_index;
 using DofTriple = std::array<GlobalDof, 3>;
+// The positions (and Newton increments) on this rank's DoFs and its ghosts, the other ranks' DoFs
+// that its cells and nodes read (PatternMesh::relevant_dofs): x(i) reads or writes DoF i by its
+// global number. Vector operations act on the owned entries and refresh the ghosts; a write to
+// an owned entry by hand needs update_ghost_values() before another rank reads it.
+using DofVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
 class PatternMesh {
  public:
@@ -55,13 +63,34 @@ class PatternMesh {
   // Node-major index 3 a + c of a cell's local DoF i (node a, component c).
   int node_major(unsigned int i) const { return 3 * local_node[i] + local_component[i]; }
 
-  Vec3 vertex_position(const dealii::Vector<double>& x, int unwelded) const;
-  Vec3 node_position(const dealii::Vector<double>& x, int node) const;
-  // Writes p into every copy of the node (seams keep copies equal).
-  void set_node_position(dealii::Vector<double>& x, int node, const Vec3& p) const;
-  // The DoF vector of welded vertices at `positions_m`, each edge midpoint on its chord.
-  dealii::Vector<double> dof_positions(const std::vector<Vec3>& positions_m) const;
-  // The welded vertices' positions in x.
+  // Positions read from a DofVector (the DoFs must be relevant here) or from a whole vector.
+  template <typename VectorType>
+  Vec3 vertex_position(const VectorType& x, int unwelded) const {
+    return triple_value(x, vertex_dofs[unwelded]);
+  }
+  template <typename VectorType>
+  Vec3 node_position(const VectorType& x, int node) const {
+    return triple_value(x, node_copies[node].front());
+  }
+  // Writes p into every copy of the node this rank holds (owned or ghost); the copies other
+  // ranks own follow with copy_seams.
+  void set_node_position(DofVector& x, int node, const Vec3& p) const;
+  // After set_node_position on the owned nodes: every copy this rank owns takes the value of
+  // the copy that carries its node, and the ghosts are refreshed (collective).
+  void copy_seams(DofVector& x) const;
+  // A zero vector over the relevant DoFs.
+  DofVector dof_vector() const { return DofVector(partitioner); }
+  // The DoF vector of welded vertices at `positions_m`, each edge midpoint on its chord (every
+  // rank is given every vertex, so it fills its ghosts itself).
+  DofVector dof_positions(const std::vector<Vec3>& positions_m) const;
+  // Every DoF's value on every rank (an MPI_Allreduce): for the output, which the case driver
+  // reads whole on every rank.
+  dealii::Vector<double> gather(const DofVector& x) const;
+  // Per-node values of the owned nodes (in the order of owned_nodes) -> those of every node, on
+  // every rank; T is double or Vec3.
+  template <typename T>
+  std::vector<T> gather_nodes(const std::vector<T>& owned_values) const;
+  // The welded vertices' positions in a whole DoF vector (gather).
   std::vector<Vec3> vertex_positions(const dealii::Vector<double>& x) const;
 
   const SimulationMesh& mesh;
@@ -73,6 +102,16 @@ class PatternMesh {
   // This rank's DoFs (deal.II's partition of the cells over the ranks); its size() is the
   // number of DoFs of all ranks.
   dealii::IndexSet owned_dofs;
+  // The owned DoFs and the ghosts: every DoF of the stored cells (cell_dofs), and every copy of
+  // a node one of them belongs to. What this rank reads of x and of an increment, and the
+  // DoFs whose constraints it keeps.
+  dealii::IndexSet relevant_dofs;
+  std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
+  // The nodes whose carrying copy's DoFs this rank owns, ascending (on one rank, every node):
+  // this rank assembles their contact and keeps their contact state (contact_nodes.h), each
+  // node's at its position k in this list.
+  std::vector<int> owned_nodes;
+  int n_owned_nodes() const { return static_cast<int>(owned_nodes.size()); }
   // Whether every node's DoF triple is three consecutive rows starting at a multiple of 3, and
   // every rank's DoFs whole triples (deal.II numbers a node's components together): the
   // matrix then has blocks of 3, one node each, as GAMG's rigid motions need.
@@ -127,6 +166,14 @@ class PatternMesh {
  private:
   std::vector<double> node_rest_area_m2_;
 
+  template <typename VectorType>
+  static Vec3 triple_value(const VectorType& x, const DofTriple& d) {
+    return Vec3(x(d[0]), x(d[1]), x(d[2]));
+  }
+  // relevant_dofs, the partitioner, owned_nodes and seam_nodes_, from the stored cells.
+  void build_relevant_dofs();
+  // The nodes with a copy other than the carrying one among this rank's DoFs (copy_seams).
+  std::vector<int> seam_nodes_;
   using Triangulation = dealii::parallel::shared::Triangulation<2>;
   // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.
   std::vector<Mat2> build_triangulation(Triangulation& triangulation) const;

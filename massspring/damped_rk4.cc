@@ -17,7 +17,7 @@ double DampedRk4::frame(std::vector<Vec3>& x, std::vector<Vec3>& v,
   for (int stage = 0; stage < 4; ++stage) {
     const std::vector<Vec3>& xs = stage == 0 ? x : stage_x_;
     const std::vector<Vec3>& vs = stage == 0 ? v : stage_v_;
-    const double r = forces(xs, force_);
+    const double r = forces(xs, vs, force_);
     if (stage == 0) {
       measure = r;
       if (!(r >= stop_below) || !std::isfinite(r)) return r;

@@ -13,9 +13,10 @@ namespace tightfit {
 
 class DampedRk4 {
  public:
-  // Fills `force` (N) for positions `x` and returns a scalar measure of it (the residual a
-  // stop rule reads).
-  using Forces = std::function<double(const std::vector<Vec3>& x, std::vector<Vec3>& force)>;
+  // Fills `force` (N) for positions `x` and velocities `v` and returns a scalar measure of it
+  // (the residual a stop rule reads; forces that depend on v, dampers, are best left out of it).
+  using Forces = std::function<double(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                      std::vector<Vec3>& force)>;
 
   // Advances (x, v) by one frame of dt_s and returns the force measure at the frame's start.
   // When that measure is below `stop_below` or not finite, x and v are left as they are: the

@@ -73,6 +73,12 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   near_.assign(n, NearFaces{});
   asked_at_m_.assign(n, Vec3::Zero());
   clearance_m_.assign(n, 0.0);
+  damper_direction_.assign(n, Vec3::Zero());
+  if (parameters_.contact_normal_damping_ratio > 0 && problem_.body)
+    for (int i = 0; i < n; ++i)
+      contact_damper_N_s_per_m_.push_back(contact_damper_N_s_per_m(
+          parameters_.contact_normal_damping_ratio,
+          problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i], mass_kg_[i]));
   if (parameters_.placement == Placement::flat_panels)
     flat_start_ = std::make_unique<FlatPanelStart>(problem_, parameters_);
 }
@@ -109,6 +115,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   // lambda = m - k A g is zero for g > m / (k A), and g >= g_asked - |x - x_asked| (a distance
   // changes no faster than the point moves). Half of that margin is used: a smooth contact
   // surface's field (docs/bodies.md) is a distance only to within its blending.
+  damper_direction_[i] = Vec3::Zero();
   if ((x - asked_at_m_[i]).norm() < 0.5 * (clearance_m_[i] - multiplier_N_[i] / penalty_N_per_m))
     return Vec3::Zero();
   const SurfacePoint s = problem_.body->query_near(x, near_[i]);
@@ -117,6 +124,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   const double lambda_N =
       contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, s.signed_distance_m);
   Vec3 f = lambda_N * s.outward_normal;
+  if (lambda_N > 0.0) damper_direction_[i] = s.gap_gradient;
   if (friction_.active() && lambda_N > 0.0) {
     const FrictionResponse r =
         friction_.response(int(i), *problem_.body, x, s, lambda_N, Vec3::Zero(), &near_[i]);
@@ -216,11 +224,24 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   K = SparseMatrix(P * K * P) + H;
 }
 
+void MassSpringBackend::add_contact_damping(const std::vector<Vec3>& v,
+                                            std::vector<Vec3>& force) const {
+  for (std::size_t i = 0; i < contact_damper_N_s_per_m_.size(); ++i) {
+    const Vec3& n = damper_direction_[i];
+    if (n == Vec3::Zero()) continue;
+    force[i] -= contact_damper_N_s_per_m_[i] * n.dot(v[i]) * n;
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
+  }
+}
+
 double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double stop_below_N) {
   const double residual = integrator_.frame(
       x_, v_, mass_kg_, dt, c,
-      [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
-        return residual_forces(x, gravity_on, force);
+      [&](const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& force) {
+        // The residual the stop rule reads is the static one: the damper is added after it.
+        const double r = residual_forces(x, gravity_on, force);
+        add_contact_damping(v, force);
+        return r;
       },
       stop_below_N);
   for (std::size_t i = 0; i < x_.size(); ++i)
@@ -240,7 +261,11 @@ double MassSpringBackend::choose_time_step_s() const {
       stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
       if (friction_.active()) stiffness[i] += friction_.tangential_stiffness_N_per_m(int(i));
     }
-  return stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety);
+  // The contact dampers, if any, may ask for a shorter step than the springs (a damping ratio
+  // above about a half of the stiffest vertex's, where the contact spring sets the step).
+  return std::min(
+      stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety),
+      damper_time_step_s(contact_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety));
 }
 
 double MassSpringBackend::contact_penetration_m(bool update_multipliers) {

@@ -140,6 +140,18 @@ class MassSpringBackend final : public Backend {
   mutable std::vector<NearFaces> near_;
   mutable std::vector<Vec3> asked_at_m_;
   mutable std::vector<double> clearance_m_;
+  // The direction of each particle's contact damper (Contact normal damping ratio) at its last
+  // evaluation, zero while out of contact, and each particle's damper coefficient
+  // 2 zeta sqrt(kA m), N s/m (empty when off). The damper acts along the gap's gradient, not
+  // along the force's normal: on the faceted body the force is kA (-g) n with n the
+  // interpolated vertex normal, whose stiffness kA n (grad g)^T is not symmetric, and a damper
+  // along n next to it lets some modes grow (the damped system's eigenvalues leave the left
+  // half plane once n and grad g are 15 to 30 degrees apart, as Ziegler's damped column
+  // does), while one along grad g damps the mode the spring kA acts on and leaves the rest.
+  mutable std::vector<Vec3> damper_direction_;
+  std::vector<double> contact_damper_N_s_per_m_;
+  // Adds each in-contact particle's damper -c (v . d) d to `force`, d = grad g.
+  void add_contact_damping(const std::vector<Vec3>& v, std::vector<Vec3>& force) const;
 };
 
 }  // namespace tightfit

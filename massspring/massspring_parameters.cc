@@ -46,6 +46,14 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Damping", text(d.damping_per_s), Double(0.0, 1e7),
                     "Mass-proportional damping c, 1/s (each particle's acceleration gets -c v). "
                     "0 = automatic: critical damping of the garment's slowest membrane wave.");
+  prm.declare_entry("Contact normal damping ratio", text(d.contact_normal_damping_ratio),
+                    Double(0.0, 1.0),
+                    "Damping ratio zeta of each vertex's penalty contact spring along the body's "
+                    "normal, dimensionless in [0, 1]: a vertex in contact gets -2 zeta sqrt(kA m) "
+                    "(v . n) n (kA its penalty stiffness in N/m, m its mass in kg, v its velocity, "
+                    "n the contact normal); 1 = critical damping of the mass on its contact "
+                    "spring. Damps the chatter of vertices on a faceted body, not a slide along "
+                    "it; the stop rule's residual leaves it out. 0 = off. RK4 only.");
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
                     "zero every frame) before damped RK4 takes over; the start also ends when "
@@ -129,6 +137,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
   damping_per_s = prm.get_double("Damping");
+  contact_normal_damping_ratio = prm.get_double("Contact normal damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
   relative_tolerance = prm.get_double("Relative tolerance");
   stop_norm = prm.get("Stop norm") == "rms" ? StopNorm::rms : StopNorm::largest;

@@ -53,6 +53,13 @@ struct MassSpringParameters {
   // Mass-proportional damping c (the acceleration gets -c v), 1/s; 0 chooses it from the
   // garment's slowest membrane wave (critical_damping_per_s, stable_time_step.h).
   double damping_per_s = 0.0;
+  // Damping ratio zeta of each vertex's contact spring along the body's normal, dimensionless
+  // in [0, 1]: a vertex in contact (lambda > 0) gets -2 zeta sqrt(kA m) (v . n) n (kA its
+  // penalty stiffness, m its mass, n the contact normal), zeta = 1 the critical damping of the
+  // mode of the mass on that spring. Tangential motion is not damped by it, so neither is a
+  // slide over the body; the force is left out of the residual the stop rule reads (as the
+  // damping above is). 0: off.
+  double contact_normal_damping_ratio = 0.0;
   // Frames of the paper's quasi-static start (velocity reset to zero every frame) before the
   // damped RK4 integration takes over.
   int quasi_static_frames = 30;

@@ -14,6 +14,11 @@ void MassSpringParameters::validate() const {
   require(time_step_safety > 0 && time_step_safety <= 1.2, "Time step safety",
           "must be in (0, 1.2]");
   require(damping_per_s >= 0, "Damping", "must be >= 0 (1/s; 0 = automatic)");
+  // Up to critical, the contact mode's eigenvalues keep the modulus omega the automatic time
+  // step is chosen for (omega (-zeta +- i sqrt(1 - zeta^2))); beyond it one grows as
+  // omega (zeta + sqrt(zeta^2 - 1)) and RK4 could leave its stability region.
+  require(contact_normal_damping_ratio >= 0 && contact_normal_damping_ratio <= 1,
+          "Contact normal damping ratio", "must be in [0, 1] (1 = critical)");
   require(quasi_static_frames >= 0, "Quasi-static frames", "must be >= 0");
   require(relative_tolerance > 0 && relative_tolerance < 1, "Relative tolerance",
           "must be in (0, 1)");

@@ -79,11 +79,12 @@ void OpenSeamGarment::forces(const std::vector<Vec3>& x, bool gravity_on,
 }
 
 void OpenSeamGarment::rk4_frame(double dt, double c, bool gravity_on) {
-  integrator_.frame(x_, v_, mass_kg_, dt, c,
-                    [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
-                      forces(x, gravity_on, force);
-                      return 0.0;
-                    });
+  integrator_.frame(
+      x_, v_, mass_kg_, dt, c,
+      [&](const std::vector<Vec3>& x, const std::vector<Vec3>&, std::vector<Vec3>& force) {
+        forces(x, gravity_on, force);
+        return 0.0;
+      });
   for (std::size_t i = 0; i < x_.size(); ++i)
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, v_[i]);
 }

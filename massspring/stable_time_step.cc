@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace tightfit {
@@ -17,6 +18,14 @@ double stable_time_step_s(const std::vector<double>& stiffness_N_per_m,
         "mass spring: cannot choose a time step (no particle has mass and stiffness); set "
         "Mass spring/Time step");
   return safety * 2.0 * std::sqrt(2.0) / std::sqrt(omega_squared_max);
+}
+
+double damper_time_step_s(const std::vector<double>& damper_N_s_per_m,
+                          const std::vector<double>& mass_kg, double safety) {
+  double rate_max = 0.0;
+  for (std::size_t i = 0; i < mass_kg.size() && i < damper_N_s_per_m.size(); ++i)
+    if (mass_kg[i] > 0) rate_max = std::max(rate_max, damper_N_s_per_m[i] / mass_kg[i]);
+  return rate_max > 0 ? safety * 2.7853 / rate_max : std::numeric_limits<double>::infinity();
 }
 
 double critical_damping_per_s(double stiffness_N_per_m, double areal_density_kg_per_m2,

@@ -13,6 +13,15 @@ namespace tightfit {
 double stable_time_step_s(const std::vector<double>& stiffness_N_per_m,
                           const std::vector<double>& mass_kg, double safety);
 
+// RK4 is stable for a damper alone, v' = -r v, while r dt < 2.7853 (where the stability region
+// meets the negative real axis: the amplification 1 + z + z^2/2 + z^3/6 + z^4/24 of z = -r dt
+// is 1 at z = -2.7853). A vertex at the contact's kink feels its normal damper c_i with its contact
+// spring not yet pushing, so the step must keep the rates r_i = c_i / m_i (dampers in N s/m,
+// masses in kg) in that interval too: returns safety * 2.7853 / max_i r_i, s, or +infinity
+// when no particle has a damper.
+double damper_time_step_s(const std::vector<double>& damper_N_s_per_m,
+                          const std::vector<double>& mass_kg, double safety);
+
 // Mass-proportional damping that critically damps the slowest membrane wave of a garment,
 // 1/s: a wave of speed sqrt(Y / rho) (Y the membrane stiffness, N/m; rho the areal density,
 // kg/m^2) across the garment's size L (m) has omega = pi sqrt(Y / rho) / L, and the damping

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace tightfit {
 namespace {
 
@@ -60,6 +63,28 @@ TEST(MassSpringParameters, ReadsAFileAndRejectsValuesOutOfRange) {
       prm.parse_input_from_string("subsection Mass spring\n  set Damping = -1\nend\n"));
   EXPECT_ANY_THROW(
       prm.parse_input_from_string("subsection Mass spring\n  set Relative tolerance = 2\nend\n"));
+}
+
+TEST(MassSpringParameters, ContactNormalDampingRatioIsReadAndKeptWithinCritical) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Contact normal damping ratio = 0.5\nend\n");
+  MassSpringParameters p;
+  p.parse_parameters(prm);
+  EXPECT_DOUBLE_EQ(p.contact_normal_damping_ratio, 0.5);
+  EXPECT_EQ(MassSpringParameters{}.contact_normal_damping_ratio, 0.0);
+  EXPECT_ANY_THROW(prm.parse_input_from_string(
+      "subsection Mass spring\n  set Contact normal damping ratio = 1.5\nend\n"));
+  p.contact_normal_damping_ratio = -0.1;
+  try {
+    p.validate();
+    ADD_FAILURE() << "a negative damping ratio was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("Mass spring/Contact normal damping ratio"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
