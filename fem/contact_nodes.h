@@ -38,6 +38,16 @@ struct ContactNodes {
   // Per owned node, the side of the contact and friction kinks a Newton step is solved on
   // (contact_set_prediction.h). Empty: every node its own at the point assembled.
   std::vector<PredictedSide> predicted;
+  // Per owned node, the body's memory of its last query (RigidBody::query_near): a Newton
+  // iterate moves a node little, and a mesh body then searches only the few faces kept near it
+  // instead of its whole tree, with the tree's own answer. Only a cache, hence mutable.
+  mutable std::vector<NearFaces> near_faces;
+
+  // body.query(p) for the node at position k, through its kept faces once near_faces is sized.
+  SurfacePoint query(const RigidBody& body, int k, const Vec3& p) const {
+    return near_faces.empty() ? body.query(p) : body.query_near(p, near_faces[k]);
+  }
+  NearFaces* near(int k) const { return near_faces.empty() ? nullptr : &near_faces[k]; }
 };
 
 // The rest edge length h_k of each node, m. A vertex: the mean rest length of the triangle

@@ -1,6 +1,6 @@
 #include "fem/contact_rounds.h"
 
-#include "contact/nodal_contact.h"
+#include "contact/penalty_contact.h"
 #include "fem/contact_set_prediction.h"
 
 #include <deal.II/base/mpi.h>
@@ -39,6 +39,7 @@ ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
   nodes_.friction = FrictionAnchors(problem.friction_coefficient,
                                     problem.tangential_stiffness_Pa_per_m, owned_area_m2);
   nodes_.multiplier_N.assign(pattern.n_owned_nodes(), 0.0);
+  nodes_.near_faces.resize(pattern.n_owned_nodes());
 }
 
 void ContactRounds::start_from(const DofVector& x) {
@@ -65,7 +66,8 @@ void ContactRounds::commit_friction(const DofVector& x) {
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
     const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes[k]);
     const FrictionResponse r = nodes_.friction.response(
-        k, *problem_.body, p, problem_.body->query(p), std::max(0.0, nodes_.multiplier_N[k]));
+        k, *problem_.body, p, nodes_.query(*problem_.body, k, p),
+        std::max(0.0, nodes_.multiplier_N[k]), Vec3::Zero(), nodes_.near(k));
     nodes_.friction.commit(k, r);
     friction_force_N_[k] = r.force_N;
     n_slipping_ += r.slipping;
@@ -109,13 +111,13 @@ int ContactRounds::update_multipliers(const DofVector& x) {
   max_penetration_m_ = 0.0;
   int n_active = 0;
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
-    const NodalContact c =
-        nodal_contact(*problem_.body, pattern_.node_position(x, pattern_.owned_nodes[k]),
-                      nodes_.multiplier_N[k], nodes_.penalty_N_per_m[k], false);
-    nodes_.multiplier_N[k] = c.multiplier_N;
-    if (c.multiplier_N > 0.0) {
+    const SurfacePoint s =
+        nodes_.query(*problem_.body, k, pattern_.node_position(x, pattern_.owned_nodes[k]));
+    nodes_.multiplier_N[k] = contact_multiplier_N(nodes_.multiplier_N[k], nodes_.penalty_N_per_m[k],
+                                                  s.signed_distance_m);
+    if (nodes_.multiplier_N[k] > 0.0) {
       ++n_active;
-      max_penetration_m_ = std::max(max_penetration_m_, std::abs(c.gap_m));
+      max_penetration_m_ = std::max(max_penetration_m_, std::abs(s.signed_distance_m));
     }
   }
   // Every rank ends the rounds alike.

@@ -37,7 +37,7 @@ bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int k,
   stiffness_N_per_m = Mat3::Zero();
   const PredictedSide side = nodes.predicted.empty() ? PredictedSide() : nodes.predicted[k];
   if (side.contact < 0) return false;  // the step leaves contact here: no contact, no friction
-  const SurfacePoint s = body.query(p);
+  const SurfacePoint s = nodes.query(body, k, p);
   const double lambda_bar = nodes.multiplier_N[k], kA = nodes.penalty_N_per_m[k];
   // Predicted in contact: the penalty force unclipped (a pull while p is outside the body).
   const double lambda = side.contact > 0
@@ -54,7 +54,7 @@ bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int k,
   FrictionResponse r;
   switch (side.friction) {
     case FrictionBranch::own:
-      r = friction.response(k, body, p, s, lambda, dlambda_dx);
+      r = friction.response(k, body, p, s, lambda, dlambda_dx, nodes.near(k));
       break;
     case FrictionBranch::stick:
       r = sticking_friction(friction.offset(k, body, p, s),
@@ -80,7 +80,7 @@ int predict_contact_set(const PatternMesh& pattern, const RigidBody& body, const
     const Vec3 p = pattern.node_position(x, node);
     // The node's displacement: node_position reads its DoF values, here the increment's.
     const Vec3 dx = pattern.node_position(increment, node);
-    const SurfacePoint s = body.query(p);
+    const SurfacePoint s = nodes.query(body, k, p);
     const double lambda_bar = nodes.multiplier_N[k], kA = nodes.penalty_N_per_m[k];
     const double lambda = contact_multiplier_N(lambda_bar, kA, s.signed_distance_m);
     const double lambda_after = lambda_bar - kA * (s.signed_distance_m + s.gap_gradient.dot(dx));

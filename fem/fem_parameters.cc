@@ -124,8 +124,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     Integer(0, 100),
                     "How often a Newton step may be solved again with the contact set it "
                     "predicts (count): each node in or out of contact as the linearised gap after "
-                    "the step says, until the set the step was solved with is the one it "
-                    "predicts (a primal-dual active-set step; fem/contact_set_prediction.h). 0: "
+                    "the step says, and with friction sticking or slipping as the linearised "
+                    "offset from its anchor and normal force say, until the sides the step was "
+                    "solved on are those it predicts (a primal-dual active-set step; "
+                    "fem/contact_set_prediction.h). 0: "
                     "every step on the nodes in contact where it starts, so that nodes reaching "
                     "the body meet no penalty in the step and the line search shortens it.");
   prm.declare_entry(
