@@ -249,6 +249,17 @@ double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double
   return residual;
 }
 
+bool MassSpringBackend::slide_has_ended(double dt_s, double& calm_s) const {
+  // The damping force on the garment's mean velocity: a creep's net force (the part of the
+  // weight friction does not hold) balances it, and a chattering vertex moves the mean by
+  // only its share of the mass.
+  Vec3 momentum = Vec3::Zero();
+  for (std::size_t i = 0; i < v_.size(); ++i) momentum += mass_kg_[i] * v_[i];
+  const double drag_N = parameters_.slide_damping_per_s * momentum.norm();
+  calm_s = drag_N < 0.5 * net_force_limit_N_ ? calm_s + dt_s : 0.0;
+  return calm_s >= 3.0 / parameters_.slide_damping_per_s;
+}
+
 double MassSpringBackend::choose_time_step_s() const {
   if (parameters_.time_step_s > 0) return parameters_.time_step_s;
   // Every particle counts its penalty spring whether it touches the body now or not: it may
@@ -339,6 +350,10 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
 
   int frame = 0, halvings = 0;
   double residual = 0.0;
+  // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
+  bool sliding = !implicit && parameters_.slide_damping_per_s > 0;
+  int slide_frames = 0;
+  double calm_s = 0.0;
   // Damped RK4 from the current state until the stop rule holds; `frame` counts on over the
   // settles of one step (the frame limit is the step's). A stalled window halves the time
   // step (residual_history.h) until the halvings run out.
@@ -370,13 +385,25 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
       // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
       const bool quasi_static = frame < parameters_.quasi_static_frames;
       if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
-      residual = rk4_frame(time_step_s_, quasi_static ? 0.0 : damping_per_s_, step.gravity_on,
-                           tolerance_N_);
+      const double c = quasi_static ? 0.0
+                       : sliding    ? parameters_.slide_damping_per_s
+                                    : damping_per_s_;
+      // While the garment slides the stop rule is not read: at the slide's lower damping a
+      // creep shows a smaller net force (massspring_parameters.h).
+      residual = rk4_frame(time_step_s_, c, step.gravity_on,
+                           sliding ? -std::numeric_limits<double>::infinity() : tolerance_N_);
       if (!std::isfinite(residual))
         throw fail("diverged (non-finite force; try a smaller Mass spring/Time step)", frame,
                    residual, false);
-      if (residual < tolerance_N_) return;  // rk4_frame left the stable state untouched
-      if (history.record(frame, residual, time_step_s_)) {
+      if (sliding) {
+        if (!quasi_static && slide_has_ended(time_step_s_, calm_s)) {
+          sliding = false;
+          slide_frames = frame + 1;
+          history.restart();
+        }
+      } else if (residual < tolerance_N_) {
+        return;  // rk4_frame left the stable state untouched
+      } else if (history.record(frame, residual, time_step_s_)) {
         if (halvings == parameters_.stall_halvings)
           throw fail(
               "stalled (the residual did not fall below Mass spring/Stall residual fall "
@@ -400,9 +427,11 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
                        false);
       if (frame >= parameters_.maximum_frames) {
         residual = residual_forces(x_, step.gravity_on, force_);
-        if (residual < tolerance_N_) return;
-        throw fail("did not reach equilibrium within Mass spring/Maximum frames", frame, residual,
-                   true);
+        if (!sliding && residual < tolerance_N_) return;
+        throw fail(sliding ? "was still sliding (Mass spring/Slide damping) at Mass "
+                             "spring/Maximum frames"
+                           : "did not reach equilibrium within Mass spring/Maximum frames",
+                   frame, residual, true);
       }
     }
   };
@@ -451,7 +480,11 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream detail;
-  detail << "mass spring: " << step_name(step) << " " << flat_start_detail << "stable after ";
+  detail << "mass spring: " << step_name(step) << " " << flat_start_detail;
+  if (parameters_.slide_damping_per_s > 0 && !implicit)
+    detail << "slid at damping " << parameters_.slide_damping_per_s << " 1/s for " << slide_frames
+           << " frames, ";
+  detail << "stable after ";
   if (implicit)
     detail << frame << " Newton iterations (implicit, " << updates
            << " contact multiplier updates), first pseudo time step " << 1.0 / damping_per_s_

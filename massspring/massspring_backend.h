@@ -79,6 +79,10 @@ class MassSpringBackend final : public Backend {
   // the frame's start (its first stage), N; when that is below stop_below_N (or not finite)
   // the state is left untouched.
   double rk4_frame(double dt_s, double damping_per_s, bool gravity_on, double stop_below_N);
+  // Slide damping: `calm_s` (s) grows by dt while the damping force on the garment's mean
+  // velocity, c_slide |sum m_i v_i|, is below half the net force limit, and restarts at 0
+  // otherwise; true once it reaches three slide damping times, 3 / c_slide.
+  bool slide_has_ended(double dt_s, double& calm_s) const;
   double choose_time_step_s() const;
   // The largest depth of a vertex in contact at the current state, m; with
   // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact

@@ -52,6 +52,14 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Damping", text(d.damping_per_s), Double(0.0, 1e7),
                     "Mass-proportional damping c, 1/s (each particle's acceleration gets -c v). "
                     "0 = automatic: critical damping of the garment's slowest membrane wave.");
+  prm.declare_entry("Slide damping", text(d.slide_damping_per_s), Double(0.0, 1e7),
+                    "Above 0 (with a Net force tolerance): each load step starts with this "
+                    "mass-proportional damping instead of Damping, 1/s, while the garment slides "
+                    "over the body as a whole, and takes Damping once the slide has ended: the "
+                    "damping force on the garment's mean velocity, total mass x this x |mean "
+                    "velocity|, below half the net force limit for 3 / (this) s. The stop rule is "
+                    "read only after that. A garment creeping down the body under its weight "
+                    "slides at a speed the damping sets (docs/dressing.md). 0 = off. RK4 only.");
   prm.declare_entry("Contact normal damping ratio", text(d.contact_normal_damping_ratio),
                     Double(0.0, 1.0),
                     "Damping ratio zeta of each vertex's penalty contact spring along the body's "
@@ -145,6 +153,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   time_step_safety = prm.get_double("Time step safety");
   time_step_update_frames = prm.get_integer("Time step update frames");
   damping_per_s = prm.get_double("Damping");
+  slide_damping_per_s = prm.get_double("Slide damping");
   contact_normal_damping_ratio = prm.get_double("Contact normal damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
   relative_tolerance = prm.get_double("Relative tolerance");

@@ -58,6 +58,18 @@ struct MassSpringParameters {
   // Mass-proportional damping c (the acceleration gets -c v), 1/s; 0 chooses it from the
   // garment's slowest membrane wave (critical_damping_per_s, stable_time_step.h).
   double damping_per_s = 0.0;
+  // Above 0 (needs a net force tolerance): each load step starts with this mass-proportional
+  // damping instead, 1/s, while the garment slides over the body as a whole, and takes the
+  // damping above once the slide has ended. A tight top whose weight friction does not hold
+  // where it was dressed creeps down at a speed the damping sets (its net force, the weight
+  // friction does not hold, over m c): the automatic c, critical for the garment's slowest
+  // membrane wave, is hundreds of 1/s and the creep takes seconds of simulated time; at a
+  // lower c it slides faster, but vertices chatter on the faceted body. The slide has ended
+  // when the damping force on the garment's mean velocity, m_total c_slide |vbar|, has stayed
+  // below half the net force limit for three slide damping times (3 / c_slide); the stop rule
+  // is read only after that (a creep at c_slide shows a net force c / c_slide times smaller).
+  // Neither damping enters the stable state. 0: off.
+  double slide_damping_per_s = 0.0;
   // Damping ratio zeta of each vertex's contact spring along the body's normal, dimensionless
   // in [0, 1]: a vertex in contact (lambda > 0) gets -2 zeta sqrt(kA m) (v . d) d (kA its
   // penalty stiffness, m its mass, d the gradient of its gap, which on a faceted body is the

@@ -14,6 +14,9 @@ void MassSpringParameters::validate() const {
   require(time_step_safety > 0 && time_step_safety <= 1.2, "Time step safety",
           "must be in (0, 1.2]");
   require(damping_per_s >= 0, "Damping", "must be >= 0 (1/s; 0 = automatic)");
+  require(slide_damping_per_s >= 0, "Slide damping", "must be >= 0 (1/s; 0 = off)");
+  require(slide_damping_per_s == 0 || net_force_tolerance > 0, "Slide damping",
+          "needs a Mass spring/Net force tolerance above 0 (the end of the slide is read on it)");
   // Up to critical, the contact mode's eigenvalues keep the modulus omega the automatic time
   // step is chosen for (omega (-zeta +- i sqrt(1 - zeta^2))); beyond it one grows as
   // omega (zeta + sqrt(zeta^2 - 1)) and RK4 could leave its stability region.

@@ -104,5 +104,24 @@ TEST(MassSpringParameters, ContactNormalDampingRatioIsReadAndKeptWithinCritical)
   expect_refused_naming(p, "Contact normal damping ratio");
 }
 
+TEST(MassSpringParameters, SlideDampingIsReadAndNeedsANetForceTolerance) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Slide damping = 50\n  set Net force tolerance = 0.05\nend\n");
+  MassSpringParameters p;
+  p.parse_parameters(prm);
+  EXPECT_DOUBLE_EQ(p.slide_damping_per_s, 50.0);
+  EXPECT_EQ(MassSpringParameters{}.slide_damping_per_s, 0.0);
+  EXPECT_ANY_THROW(
+      prm.parse_input_from_string("subsection Mass spring\n  set Slide damping = -1\nend\n"));
+  // The slide's end is read against the net force limit: without one it is refused.
+  p.net_force_tolerance = 0.0;
+  expect_refused_naming(p, "Slide damping");
+  p.net_force_tolerance = 0.05;
+  p.slide_damping_per_s = -1.0;
+  expect_refused_naming(p, "Slide damping");
+}
+
 }  // namespace
 }  // namespace tightfit
