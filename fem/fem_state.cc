@@ -159,4 +159,48 @@ FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssemb
   return out;
 }
 
+OwnedSurfaceOutput::OwnedSurfaceOutput(const PatternMesh& pattern, const FemSurfaceOutput& whole)
+    : has_step_(true) {
+  const SurfaceState& state = whole.state;
+  for (const int node : pattern.owned_nodes) {
+    const int w = pattern.global_node(node);
+    const bool vertex = w < pattern.n_vertices();
+    positions_m_.push_back(vertex ? state.positions_m[w] : Vec3::Zero());
+    internal_force_N_.push_back(vertex ? state.internal_force_N[w] : Vec3::Zero());
+    contact_force_N_.push_back(vertex ? state.contact_force_N[w] : Vec3::Zero());
+    gap_m_.push_back(vertex ? state.gap_m[w] : 0.0);
+    in_contact_.push_back(vertex && state.in_contact[w] ? 1.0 : 0.0);
+    contact_traction_Pa_.push_back(vertex ? whole.contact_traction_Pa[w] : 0.0);
+  }
+}
+
+namespace {
+
+// Every vertex's values from the owned nodes' (collective): the vertices come first.
+template <typename T>
+std::vector<T> every_vertex(const PatternMesh& pattern, const std::vector<T>& owned_values) {
+  std::vector<T> values = pattern.gather_nodes(owned_values);
+  values.resize(pattern.n_vertices());
+  return values;
+}
+
+}  // namespace
+
+SurfaceState OwnedSurfaceOutput::state(const PatternMesh& pattern) const {
+  SurfaceState state;
+  if (!has_step_) return state;
+  state.positions_m = every_vertex(pattern, positions_m_);
+  state.internal_force_N = every_vertex(pattern, internal_force_N_);
+  state.contact_force_N = every_vertex(pattern, contact_force_N_);
+  state.gap_m = every_vertex(pattern, gap_m_);
+  const std::vector<double> in_contact = every_vertex(pattern, in_contact_);
+  state.in_contact.reserve(in_contact.size());
+  for (const double c : in_contact) state.in_contact.push_back(c > 0.5);
+  return state;
+}
+
+std::vector<double> OwnedSurfaceOutput::contact_traction_Pa(const PatternMesh& pattern) const {
+  return has_step_ ? every_vertex(pattern, contact_traction_Pa_) : std::vector<double>{};
+}
+
 }  // namespace tightfit
