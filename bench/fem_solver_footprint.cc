@@ -11,7 +11,8 @@
 // Prints, per rank, the resident set with MPI and PETSc started (the libraries' floor, which no
 // distribution lowers), after the garment's mesh is built, after the backend's setup, the peak
 // up to then (the setup's, with the deal.II triangulation it frees) and the peak over the run
-// (MB), and the step's Newton and Krylov iterations, wall and CPU time.
+// (MB), the resident set after the step (the solver's state it keeps and the step's output),
+// and the step's Newton and Krylov iterations, wall and CPU time.
 #include "../tests/fem/tube_problem.h"
 #include "fem/fem_backend.h"
 
@@ -91,6 +92,7 @@ int main(int argc, char** argv) {
   const std::clock_t cpu_start = std::clock();
   const StepReport report = backend.solve({0, alpha, false});
   const double cpu_s = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const double step_MB = resident_MB();  // the solver's state kept, and the step's output
   const double mean_Pa = tube.pressure(backend.state()).mean_Pa;
   for (int r = 0; r < n_ranks; ++r) {
     MPI_Barrier(MPI_COMM_WORLD);
@@ -98,9 +100,10 @@ int main(int argc, char** argv) {
       std::printf(
           "rank %d of %d: %d vertices, %s: resident %.0f MB with MPI and PETSc started, "
           "%.0f MB with the mesh, %.0f MB after setup, peak %.0f MB (%.0f MB above the "
-          "first); %.1f s CPU, p_mean %.10f Pa; setup peak %.0f MB; memory %s\n",
+          "first); %.1f s CPU, p_mean %.10f Pa; setup peak %.0f MB; %.0f MB after the step; "
+          "memory %s\n",
           rank, n_ranks, tube.mesh.n_vertices, argv[2], floor_MB, mesh_MB, setup_MB,
-          peak_resident_MB(), peak_resident_MB() - floor_MB, cpu_s, mean_Pa, setup_peak_MB,
+          peak_resident_MB(), peak_resident_MB() - floor_MB, cpu_s, mean_Pa, setup_peak_MB, step_MB,
           memory.c_str());
     std::fflush(stdout);
   }

@@ -48,9 +48,21 @@ VertexConstraint fixed_group(const SimulationMesh& mesh, const std::string& grou
   return c;
 }
 
+namespace {
+
+// Gram-Schmidt against the directions already held, so that removing components one after the
+// other is a projection.
+void add_direction(std::vector<Vec3>& held, const Vec3& direction) {
+  Vec3 d = direction.normalized();
+  for (const Vec3& h : held) d -= d.dot(h) * h;
+  if (d.norm() > independent) held.push_back(d.normalized());
+}
+
+}  // namespace
+
 ConstrainedDirections::ConstrainedDirections(const std::vector<VertexConstraint>& constraints,
-                                             int n_vertices)
-    : directions_(n_vertices) {
+                                             int n_vertices) {
+  std::vector<std::vector<Vec3>> directions(n_vertices);
   for (const VertexConstraint& c : constraints) {
     const bool fixed = c.kind == VertexConstraint::Kind::fixed;
     if (!fixed && !(c.direction.norm() > 0))
@@ -61,25 +73,22 @@ ConstrainedDirections::ConstrainedDirections(const std::vector<VertexConstraint>
         throw std::invalid_argument("constraint on vertex group '" + c.group + "': vertex " +
                                     std::to_string(v) + " is not a vertex of the mesh");
       if (fixed)
-        for (int axis = 0; axis < 3; ++axis) add_direction(v, Vec3::Unit(axis));
+        for (int axis = 0; axis < 3; ++axis) add_direction(directions[v], Vec3::Unit(axis));
       else
-        add_direction(v, c.direction);
+        add_direction(directions[v], c.direction);
     }
   }
-}
-
-void ConstrainedDirections::add_direction(int v, const Vec3& direction) {
-  // Gram-Schmidt against the directions already held, so that removing components one after
-  // the other is a projection.
-  Vec3 d = direction.normalized();
-  for (const Vec3& held : directions_[v]) d -= d.dot(held) * held;
-  if (d.norm() > independent) directions_[v].push_back(d.normalized());
+  directions_ = CompactLists<Vec3>::from(directions);
 }
 
 ConstrainedDirections ConstrainedDirections::copies(const std::vector<int>& welded_index) const {
   ConstrainedDirections result;
-  result.directions_.reserve(welded_index.size());
-  for (int w : welded_index) result.directions_.push_back(directions_.at(w));
+  for (int w : welded_index) {
+    if (w < 0 || w >= size())
+      throw std::out_of_range("ConstrainedDirections::copies: no vertex " + std::to_string(w));
+    result.directions_.push_back(directions_[w]);
+  }
+  result.directions_.shrink_to_fit();
   return result;
 }
 
@@ -91,7 +100,7 @@ void ConstrainedDirections::add_shared(int a, int b) {
     for (const Vec3& e : directions_[b]) outside -= outside.dot(e) * e;
     if (outside.norm() < 1e-9) shared.push_back(d);
   }
-  directions_.push_back(std::move(shared));
+  directions_.push_back(shared);
 }
 
 }  // namespace tightfit

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/backend.h"
+#include "core/compact_lists.h"
 
 #include <string>
 #include <vector>
@@ -27,9 +28,9 @@ class ConstrainedDirections {
   // unwelded panels of the flat-panel start, or a node list of which the vertices come first).
   ConstrainedDirections copies(const std::vector<int>& welded_index) const;
 
-  int size() const { return static_cast<int>(directions_.size()); }
+  int size() const { return directions_.size(); }
   bool constrained(int v) const { return !directions_[v].empty(); }
-  const std::vector<Vec3>& directions(int v) const { return directions_[v]; }
+  ListView<Vec3> directions(int v) const { return directions_[v]; }
   // Removes from `vector` its components along vertex v's constrained directions.
   void remove_constrained(int v, Vec3& vector) const {
     for (const Vec3& d : directions_[v]) vector -= vector.dot(d) * d;
@@ -39,8 +40,8 @@ class ConstrainedDirections {
   void add_shared(int a, int b);
 
  private:
-  void add_direction(int v, const Vec3& direction);
-  std::vector<std::vector<Vec3>> directions_;
+  // Stored packed (compact_lists.h): most vertices have none.
+  CompactLists<Vec3> directions_;
 };
 
 }  // namespace tightfit

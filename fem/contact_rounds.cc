@@ -29,13 +29,13 @@ ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
   // Of every node, then kept for this rank's.
   const std::vector<double> area_m2 =
       nodal_rest_areas_m2(pattern.mesh, pattern.edge_index, parameters.element_degree);
-  const std::vector<double> penalty_N_per_m = nodal_penalties_N_per_m(
-      area_m2, parameters.penalty_factor * problem.law->stiffness_scale(), pattern.node_edge_m);
-  std::vector<double> owned_area_m2;
+  std::vector<double> owned_area_m2, owned_edge_m;
   for (const int node : pattern.owned_nodes) {
-    nodes_.penalty_N_per_m.push_back(penalty_N_per_m[node]);
-    owned_area_m2.push_back(area_m2[node]);
+    owned_area_m2.push_back(area_m2[pattern.global_node(node)]);
+    owned_edge_m.push_back(pattern.node_edge_m[node]);
   }
+  nodes_.penalty_N_per_m = nodal_penalties_N_per_m(
+      owned_area_m2, parameters.penalty_factor * problem.law->stiffness_scale(), owned_edge_m);
   nodes_.friction = FrictionAnchors(problem.friction_coefficient,
                                     problem.tangential_stiffness_Pa_per_m, owned_area_m2);
   nodes_.multiplier_N.assign(pattern.n_owned_nodes(), 0.0);

@@ -131,9 +131,9 @@ class FemBackend::Implementation {
   NewtonSolver newton_;
   ContactRounds contact_;
   NewtonSystem system_;
-  DofVector x_;  // this rank's DoFs and ghosts: the current positions, m
-  FemSurfaceOutput output_;
-  NewtonLog log_;  // of the last step, kept after a failure
+  DofVector x_;                // this rank's DoFs and ghosts: the current positions, m
+  OwnedSurfaceOutput output_;  // of the last step, this rank's vertices only
+  NewtonLog log_;              // of the last step, kept after a failure
 };
 
 StepReport FemBackend::Implementation::solve(const LoadStep& step) {
@@ -150,10 +150,11 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   const ContactRoundsResult rounds = contact_.solve(step, newton_, assemble, system_, x_, log);
   report.iterations = rounds.newton_iterations;
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  output_ = surface_output(pattern_, assembly_, *problem_.body, x_,
-                           pattern_.gather_nodes(contact_.nodes().multiplier_N),
-                           step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{},
-                           pattern_.gather_nodes(contact_.friction_force_N()));
+  output_ = OwnedSurfaceOutput(
+      pattern_, surface_output(pattern_, assembly_, *problem_.body, x_,
+                               pattern_.gather_nodes(contact_.nodes().multiplier_N),
+                               step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{},
+                               pattern_.gather_nodes(contact_.friction_force_N())));
 
   std::ostringstream detail;
   detail << "newton " << report.iterations << " in " << rounds.rounds.size()
@@ -198,15 +199,15 @@ StepReport FemBackend::solve(const LoadStep& step) {
 }
 
 SurfaceState FemBackend::state() const {
-  return impl_->output_.state;
+  return impl_->output_.state(impl_->pattern_);
 }
 
 std::vector<std::pair<std::string, std::vector<double>>> FemBackend::extra_point_data() const {
-  return {{"contact_traction_Pa", impl_->output_.contact_traction_Pa}};
+  return {{"contact_traction_Pa", contact_traction_Pa()}};
 }
 
 std::vector<double> FemBackend::contact_traction_Pa() const {
-  return impl_->output_.contact_traction_Pa;
+  return impl_->output_.contact_traction_Pa(impl_->pattern_);
 }
 
 std::vector<double> FemBackend::nodal_contact_force_N() const {

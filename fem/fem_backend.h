@@ -38,13 +38,15 @@ class FemBackend final : public Backend {
   void set_positions(const std::vector<Vec3>& positions_m) override;
   // Throws SolverError naming the step (index, alpha) and the residual when it fails.
   StepReport solve(const LoadStep& step) override;
+  // Every vertex's, on every rank; collective: each rank keeps its own vertices' output only.
   SurfaceState state() const override;
-  // contact_traction_Pa() as "contact_traction_Pa", beside the extractor's pressure_Pa.
+  // contact_traction_Pa() as "contact_traction_Pa", beside the extractor's pressure_Pa
+  // (collective).
   std::vector<std::pair<std::string, std::vector<double>>> extra_point_data() const override;
 
   // Contact traction at each welded vertex, Pa (zero off contact), written beside the
   // extractor's pressure. Degree 1: the contact multiplier over the vertex's current
-  // barycentric area. Degree 2: the traction recovered on the curved surface.
+  // barycentric area. Degree 2: the traction recovered on the curved surface. Collective.
   std::vector<double> contact_traction_Pa() const;
   // The contact multipliers of every node (vertices, then with degree 2 the edge midpoints)
   // after the last step, N: the solver's own nodal contact forces, before any traction is

@@ -15,7 +15,8 @@ namespace {
 // Adds homogeneous constraints dx . d = 0 for each direction d on one vertex's three DoFs.
 // Each direction eliminates one component, chosen after removing the components the earlier
 // directions eliminated, so the constraints never form a cycle.
-void constrain_directions(const DofTriple& dofs, const std::vector<Vec3>& directions,
+template <typename Directions>
+void constrain_directions(const DofTriple& dofs, const Directions& directions,
                           dealii::AffineConstraints<double>& constraints) {
   std::array<bool, 3> eliminated{false, false, false};
   std::vector<std::pair<int, Vec3>> done;
@@ -49,9 +50,9 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
   constraints.clear();
   constraints.reinit(relevant);
   // Seams: every copy of a node (a welded vertex, or the midpoint of a seam edge) follows
-  // the copy that carries it.
-  for (const std::vector<DofTriple>& copies : pattern.node_copies) {
-    if (copies.size() < 2 || !relevant.is_element(copies[0][0])) continue;
+  // the copy that carries it. Every copy of this rank's nodes is relevant here.
+  for (int node = 0; node < pattern.n_local_nodes(); ++node) {
+    const ListView<DofTriple> copies = pattern.copies(node);
     for (std::size_t k = 1; k < copies.size(); ++k)
       for (int c = 0; c < 3; ++c) {
         constraints.add_line(copies[k][c]);
@@ -59,16 +60,18 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
       }
   }
   // Constrained nodes keep their coordinates along their constrained directions.
-  for (int node = 0; node < pattern.n_nodes(); ++node)
-    if (pattern.node_constrained.constrained(node) &&
-        relevant.is_element(pattern.node_copies[node].front()[0]))
-      constrain_directions(pattern.node_copies[node].front(),
-                           pattern.node_constrained.directions(node), constraints);
-  const RigidMotionPin pin = rigid_motion_pin(*problem.body, positions_m, pattern.node_constrained,
-                                              problem.friction_coefficient > 0.0);
+  for (int node = 0; node < pattern.n_local_nodes(); ++node)
+    if (pattern.node_constrained.constrained(node))
+      constrain_directions(pattern.carrier(node), pattern.node_constrained.directions(node),
+                           constraints);
+  // The pins are chosen among every vertex alike on every rank: from the whole garment's
+  // positions and constraints (held only while they are chosen).
+  const RigidMotionPin pin = rigid_motion_pin(
+      *problem.body, positions_m, ConstrainedDirections(problem.constraints, pattern.n_vertices()),
+      problem.friction_coefficient > 0.0);
   for (const RigidMotionPin::Pin& p : pin.pins) {
-    const DofTriple& dofs = pattern.vertex_dofs[pattern.master[p.vertex]];
-    if (relevant.is_element(dofs[0])) constrain_directions(dofs, p.directions, constraints);
+    const int node = pattern.find_node(p.vertex);
+    if (node >= 0) constrain_directions(pattern.carrier(node), p.directions, constraints);
   }
   constraints.close();
 

@@ -55,8 +55,7 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
 // lessens it where it presses, n_body . g < 0). That load is recovered as a second traction
 // t_g and the internal force becomes -(t_g A_v) n_v.
 void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
-                                  const DofVector& x, const dealii::Vector<double>& whole_x,
-                                  const std::vector<double>& multiplier_N,
+                                  const DofVector& x, const std::vector<double>& multiplier_N,
                                   const std::vector<Vec3>& gravity_load_N, FemSurfaceOutput& out) {
   const SimulationMesh& mesh = pattern.mesh;
   const int n = mesh.n_vertices;
@@ -106,10 +105,14 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
       recover_traction_Pa(n, quadrature, hat_loads(contact_load_N));
   std::vector<double> garment_traction = traction;
   if (!gravity_load_N.empty()) {
+    // The weight's normal part at each owned node, then at every node.
+    std::vector<double> owned_weight_N;
+    for (const int node : pattern.owned_nodes)
+      owned_weight_N.push_back(gravity_load_N[pattern.global_node(node)].dot(
+          body.query(pattern.node_position(x, node)).outward_normal));
+    const std::vector<double> weight_N = pattern.gather_nodes(owned_weight_N);
     std::vector<double> garment_load_N = contact_load_N;
-    for (int k = 0; k < pattern.n_nodes(); ++k)
-      garment_load_N[k] +=
-          gravity_load_N[k].dot(body.query(pattern.node_position(whole_x, k)).outward_normal);
+    for (int k = 0; k < pattern.n_nodes(); ++k) garment_load_N[k] += weight_N[k];
     garment_traction = recover_traction_Pa(n, quadrature, hat_loads(garment_load_N));
   }
 
@@ -148,13 +151,56 @@ FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssemb
                                 const std::vector<Vec3>& gravity_load_N,
                                 const std::vector<Vec3>& friction_force_N) {
   FemSurfaceOutput out;
-  const dealii::Vector<double> whole_x = pattern.gather(x);
-  out.state.positions_m = pattern.vertex_positions(whole_x);
+  out.state.positions_m = pattern.vertex_positions(x);
   if (pattern.element_degree == 1)
     fill_from_multipliers(pattern, assembly, body, x, multiplier_N, friction_force_N, out);
   else
-    fill_from_recovered_traction(pattern, body, x, whole_x, multiplier_N, gravity_load_N, out);
+    fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, out);
   return out;
+}
+
+OwnedSurfaceOutput::OwnedSurfaceOutput(const PatternMesh& pattern, const FemSurfaceOutput& whole)
+    : has_step_(true) {
+  const SurfaceState& state = whole.state;
+  for (const int node : pattern.owned_nodes) {
+    const int w = pattern.global_node(node);
+    const bool vertex = w < pattern.n_vertices();
+    positions_m_.push_back(vertex ? state.positions_m[w] : Vec3::Zero());
+    internal_force_N_.push_back(vertex ? state.internal_force_N[w] : Vec3::Zero());
+    contact_force_N_.push_back(vertex ? state.contact_force_N[w] : Vec3::Zero());
+    gap_m_.push_back(vertex ? state.gap_m[w] : 0.0);
+    in_contact_.push_back(vertex && state.in_contact[w] ? 1.0 : 0.0);
+    contact_traction_Pa_.push_back(vertex ? whole.contact_traction_Pa[w] : 0.0);
+  }
+}
+
+namespace {
+
+// Every vertex's values from the owned nodes' (collective): the vertices come first.
+template <typename T>
+std::vector<T> every_vertex(const PatternMesh& pattern, const std::vector<T>& owned_values) {
+  std::vector<T> values = pattern.gather_nodes(owned_values);
+  values.resize(pattern.n_vertices());
+  return values;
+}
+
+}  // namespace
+
+SurfaceState OwnedSurfaceOutput::state(const PatternMesh& pattern) const {
+  SurfaceState state;
+  if (!has_step_) return state;
+  state.positions_m = every_vertex(pattern, positions_m_);
+  state.internal_force_N = every_vertex(pattern, internal_force_N_);
+  state.contact_force_N = every_vertex(pattern, contact_force_N_);
+  state.gap_m = every_vertex(pattern, gap_m_);
+  const std::vector<double> in_contact = every_vertex(pattern, in_contact_);
+  state.in_contact.reserve(in_contact.size());
+  for (const double c : in_contact) state.in_contact.push_back(c > 0.5);
+  return state;
+}
+
+std::vector<double> OwnedSurfaceOutput::contact_traction_Pa(const PatternMesh& pattern) const {
+  return has_step_ ? every_vertex(pattern, contact_traction_Pa_) : std::vector<double>{};
 }
 
 }  // namespace tightfit

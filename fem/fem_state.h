@@ -33,4 +33,22 @@ FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssemb
                                 const std::vector<Vec3>& gravity_load_N,
                                 const std::vector<Vec3>& friction_force_N);
 
+// The output as a rank keeps it between steps: the values of its owned nodes only (in the order
+// of PatternMesh::owned_nodes; an edge midpoint's are zero), so that no rank holds every
+// vertex's state while the next step is solved. state() and contact_traction_Pa() give every
+// vertex's again, on every rank (collective; empty before the first step), exactly: each
+// vertex's values come from the one rank that owns it.
+class OwnedSurfaceOutput {
+ public:
+  OwnedSurfaceOutput() = default;
+  OwnedSurfaceOutput(const PatternMesh& pattern, const FemSurfaceOutput& whole);
+  SurfaceState state(const PatternMesh& pattern) const;
+  std::vector<double> contact_traction_Pa(const PatternMesh& pattern) const;
+
+ private:
+  bool has_step_ = false;
+  std::vector<Vec3> positions_m_, internal_force_N_, contact_force_N_;
+  std::vector<double> gap_m_, in_contact_, contact_traction_Pa_;  // in contact: 1 or 0
+};
+
 }  // namespace tightfit

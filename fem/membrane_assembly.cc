@@ -94,7 +94,7 @@ void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
   std::vector<GlobalDof> vertex_dof_list(3);
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
     const int node = pattern_.owned_nodes[k];
-    const DofTriple& d = pattern_.node_copies[node].front();
+    const DofTriple& d = pattern_.carrier(node);
     Vec3 force_N;
     Mat3 stiffness_N_per_m;
     const bool touching = node_contact(k, pattern_.node_position(x, node), contact, with_tangent,
@@ -117,20 +117,24 @@ void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
 }
 
 std::vector<Vec3> MembraneAssembly::internal_force_N(const DofVector& x) const {
-  dealii::Vector<double> gradient_full(pattern_.n_dofs());
+  // The energy gradient on this rank's DoFs and ghosts, each cell's on the rank that owns it.
+  DofVector gradient_dofs = pattern_.dof_vector();
   Eigen::VectorXd gradient;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
     if (!pattern_.cell_owned[cell]) continue;
     cell_kernel(cell, x, gradient, nullptr);
     for (unsigned int i = 0; i < pattern_.cell_dofs[cell].size(); ++i)
-      gradient_full[pattern_.cell_dofs[cell][i]] += gradient[pattern_.node_major(i)];
+      gradient_dofs(pattern_.cell_dofs[cell][i]) += gradient[pattern_.node_major(i)];
   }
-  MPI_Allreduce(MPI_IN_PLACE, gradient_full.begin(), static_cast<int>(gradient_full.size()),
-                MPI_DOUBLE, MPI_SUM, comm_);
-  const SimulationMesh& mesh = pattern_.mesh;
-  std::vector<Vec3> force(mesh.n_vertices, Vec3::Zero());
-  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-    force[mesh.welded_index[u]] -= pattern_.vertex_position(gradient_full, u);
+  gradient_dofs.compress(dealii::VectorOperation::add);
+  gradient_dofs.update_ghost_values();
+  // Each owned vertex's force, summed over its copies (the first carries it), then gathered.
+  std::vector<Vec3> owned_force(pattern_.n_owned_nodes(), Vec3::Zero());
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k)
+    for (const DofTriple& d : pattern_.copies(pattern_.owned_nodes[k]))
+      owned_force[k] -= Vec3(gradient_dofs(d[0]), gradient_dofs(d[1]), gradient_dofs(d[2]));
+  std::vector<Vec3> force = pattern_.gather_nodes(owned_force);
+  force.resize(pattern_.n_vertices());  // the vertices come first
   return force;
 }
 
@@ -147,7 +151,7 @@ void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
   std::vector<int> dof_row(pattern_.n_dofs(), -1);
   for (int node = 0; node < n; ++node) {
     pattern_.set_node_position(x, node, node_positions_m[node]);
-    for (const DofTriple& d : pattern_.node_copies[node])
+    for (const DofTriple& d : pattern_.copies(node))
       for (int c = 0; c < 3; ++c) dof_row[d[c]] = 3 * node + c;
   }
   residual_N.setZero(3 * n);

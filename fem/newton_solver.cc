@@ -39,8 +39,8 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
                                                          parameters.max_linear_iterations, comm)) {
   const dealii::IndexSet& owned = pattern.owned_dofs;
   dof_weight_.assign(owned.n_elements(), 1.0);
-  for (int node = 0; node < pattern.n_nodes(); ++node)
-    for (const DofTriple& copy : pattern.node_copies[node])
+  for (int node = 0; node < pattern.n_local_nodes(); ++node)
+    for (const DofTriple& copy : pattern.copies(node))
       for (const GlobalDof i : copy)
         if (owned.is_element(i))
           dof_weight_[owned.index_within_set(i)] = pattern.mean_edge_m / pattern.node_edge_m[node];
@@ -64,18 +64,20 @@ double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
 
 std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofVector& x_owned,
                                           const NewtonLog& log) const {
-  const dealii::Vector<double> x = pattern_.gather(x_owned);
-  dealii::Vector<double> rhs(pattern_.n_dofs());
-  for (const auto i : pattern_.owned_dofs) rhs[i] = system.rhs(i);
-  MPI_Allreduce(MPI_IN_PLACE, rhs.begin(), static_cast<int>(rhs.size()), MPI_DOUBLE, MPI_SUM,
-                comm_);
-  // rhs = -R: the residual force on each node, summed over its copies.
-  std::vector<Vec3> positions(pattern_.n_nodes()), residual(pattern_.n_nodes(), Vec3::Zero());
-  for (int node = 0; node < pattern_.n_nodes(); ++node) {
-    positions[node] = pattern_.node_position(x, node);
-    for (const DofTriple& copy : pattern_.node_copies[node])
-      for (int c = 0; c < 3; ++c) residual[node][c] += rhs[copy[c]];
+  DofVector rhs = pattern_.dof_vector();
+  for (const auto i : pattern_.owned_dofs) rhs(i) = system.rhs(i);
+  rhs.update_ghost_values();
+  // rhs = -R: the residual force on each owned node, summed over its copies; then every node's.
+  std::vector<Vec3> owned_positions, owned_residual;
+  for (const int node : pattern_.owned_nodes) {
+    owned_positions.push_back(pattern_.node_position(x_owned, node));
+    owned_residual.push_back(pattern_.node_position(rhs, node));
+    const ListView<DofTriple> copies = pattern_.copies(node);
+    for (std::size_t k = 1; k < copies.size(); ++k)
+      for (int c = 0; c < 3; ++c) owned_residual.back()[c] += rhs(copies[k][c]);
   }
+  const std::vector<Vec3> positions = pattern_.gather_nodes(owned_positions);
+  const std::vector<Vec3> residual = pattern_.gather_nodes(owned_residual);
   // Windows of 20 iterations, marked 'stalled' where the residual fell by less than a tenth
   // over one (the mark only informs: the iteration limit ends the step).
   ResidualHistory history(20, 0.9, "Newton iterations", "step length taken there");

@@ -51,36 +51,44 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
       local_component.push_back(fe.system_to_component_index(i).first);
       local_node.push_back(fe.system_to_component_index(i).second);
     }
-    vertex_dofs.assign(mesh.n_unwelded_vertices(), DofTriple{});
-    for (const auto& cell : dof_handler.active_cell_iterators())
-      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-        for (unsigned int c = 0; c < 3; ++c)
-          vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
-    master.assign(mesh.n_vertices, -1);
-    for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-      if (master[mesh.welded_index[u]] < 0) master[mesh.welded_index[u]] = u;
-    build_nodes(dof_handler);
-    build_cell_quadrature(dof_handler, to_grain_gradient);
+    n_all_cells_ = static_cast<int>(triangulation.n_active_cells());
+    // Every node's copies and rest area live only while this rank picks its own.
+    const NodeCopies all_copies = build_nodes(dof_handler);
+    n_nodes_ = static_cast<int>(all_copies.size());
+    keep_relevant_nodes(all_copies,
+                        build_cell_quadrature(dof_handler, to_grain_gradient, all_copies));
   }
-  build_relevant_dofs();
   dofs_in_node_blocks = owned_dofs.is_contiguous() && owned_dofs.n_elements() % 3 == 0 &&
                         (owned_dofs.n_elements() == 0 || owned_dofs.nth_index_in_set(0) % 3 == 0);
-  for (const auto& copies : node_copies)
-    for (const DofTriple& d : copies)
+  for (int node = 0; node < n_local_nodes(); ++node)
+    for (const DofTriple& d : copies(node))
       dofs_in_node_blocks =
           dofs_in_node_blocks && d[0] % 3 == 0 && d[1] == d[0] + 1 && d[2] == d[0] + 2;
   // On every rank alike: the coordinates' vector and the matrix's block size are collective.
   dofs_in_node_blocks = dealii::Utilities::MPI::min(dofs_in_node_blocks ? 1 : 0, comm) == 1;
-  release_freed_memory();
-  node_constrained = ConstrainedDirections(problem.constraints, mesh.n_vertices);
-  // An edge midpoint is constrained along what both its ends are.
-  for (const auto& ends : edge_ends) node_constrained.add_shared(ends[0], ends[1]);
+  {
+    ConstrainedDirections every_node(problem.constraints, mesh.n_vertices);
+    // An edge midpoint is constrained along what both its ends are.
+    for (const auto& ends : edge_ends) every_node.add_shared(ends[0], ends[1]);
+    node_constrained = every_node.copies(global_nodes_);
+  }
 
   double edge_sum = 0.0;
   for (const auto& r : mesh.rest_triangles)
     edge_sum += (r[1] - r[0]).norm() + (r[2] - r[1]).norm() + (r[0] - r[2]).norm();
   mean_edge_m = edge_sum / (3.0 * mesh.rest_triangles.size());
-  node_edge_m = node_edge_lengths_m(mesh, edge_ends, element_degree);
+  {
+    const std::vector<double> every_node = node_edge_lengths_m(mesh, edge_ends, element_degree);
+    node_edge_m.reserve(n_local_nodes());
+    for (const int global : global_nodes_) node_edge_m.push_back(every_node[global]);
+  }
+  release_freed_memory();
+}
+
+int PatternMesh::find_node(int global) const {
+  const auto it = std::lower_bound(global_nodes_.begin(), global_nodes_.end(), global);
+  return it != global_nodes_.end() && *it == global ? static_cast<int>(it - global_nodes_.begin())
+                                                    : -1;
 }
 
 std::vector<Mat2> PatternMesh::build_triangulation(Triangulation& triangulation) const {
@@ -124,12 +132,18 @@ std::vector<Mat2> PatternMesh::build_triangulation(Triangulation& triangulation)
   return to_grain_gradient;
 }
 
-void PatternMesh::build_nodes(const dealii::DoFHandler<2>& dof_handler) {
-  node_copies.assign(mesh.n_vertices, {});
-  for (int w = 0; w < mesh.n_vertices; ++w) node_copies[w].push_back(vertex_dofs[master[w]]);
+PatternMesh::NodeCopies PatternMesh::build_nodes(const dealii::DoFHandler<2>& dof_handler) {
+  // A welded vertex's copies are its unwelded vertices' DoF triples, the first carrying it.
+  std::vector<DofTriple> vertex_dofs(mesh.n_unwelded_vertices());
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
+  NodeCopies node_copies(mesh.n_vertices);
   for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-    if (master[mesh.welded_index[u]] != u)
-      node_copies[mesh.welded_index[u]].push_back(vertex_dofs[u]);
+    node_copies[mesh.welded_index[u]].push_back(vertex_dofs[u]);
+  // Linear triangles have no other nodes, and their output needs no corner lists.
+  if (element_degree == 1) return node_copies;
 
   // Each element node's cell corners, from the barycentric coordinates of its support point
   // on the reference triangle (corners (0,0), (1,0), (0,1)): one corner for a vertex node,
@@ -176,10 +190,12 @@ void PatternMesh::build_nodes(const dealii::DoFHandler<2>& dof_handler) {
     }
   }
   for (auto& copies : midpoint_copies) node_copies.push_back(std::move(copies));
+  return node_copies;
 }
 
-void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
-                                        const std::vector<Mat2>& to_grain_gradient) {
+std::vector<double> PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
+                                                       const std::vector<Mat2>& to_grain_gradient,
+                                                       const NodeCopies& all_copies) {
   dealii::FEValues<2> fe_values(mapping, fe, quadrature,
                                 dealii::update_gradients | dealii::update_JxW_values);
   const unsigned int n_local = fe.n_dofs_per_cell();
@@ -196,14 +212,14 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
   }
   // A cell adds to the rows of its own DoFs and, for a seam copy, to those of the copy that
   // carries the node (fem_constraints.h).
-  const std::vector<int> dof_node = dof_nodes();
+  const std::vector<int> dof_node = dof_nodes(all_copies);
   const auto adds_to_owned_row = [&](const std::vector<GlobalDof>& dofs) {
     for (const GlobalDof i : dofs)
-      for (const GlobalDof row : {i, node_copies[dof_node[i]].front()[0]})
+      for (const GlobalDof row : {i, all_copies[dof_node[i]].front()[0]})
         if (owned_dofs.is_element(row)) return true;
     return false;
   };
-  node_rest_area_m2_.assign(n_nodes(), 0.0);
+  std::vector<double> rest_area_m2(all_copies.size(), 0.0);
   cell_dofs.reset(n_local);
   cell_JxW_m2.reset(quadrature.size());
   cell_grad_grain.reset(quadrature.size() * n_nodes_per_cell);
@@ -224,8 +240,7 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
       for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
         node_area_m2[a] += shape_values[q][a] * fe_values.JxW(q) * grain_area_ratio;
     for (unsigned int i = 0; i < n_local; ++i)
-      if (local_component[i] == 0)
-        node_rest_area_m2_[dof_node[dofs[i]]] += node_area_m2[local_node[i]];
+      if (local_component[i] == 0) rest_area_m2[dof_node[dofs[i]]] += node_area_m2[local_node[i]];
     if (!cell->is_locally_owned() && !adds_to_owned_row(dofs)) continue;
 
     cell_index.push_back(static_cast<int>(c));
@@ -248,35 +263,50 @@ void PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler
   cell_JxW_m2.shrink_to_fit();
   cell_grad_grain.shrink_to_fit();
   cell_node_rest_area_m2.shrink_to_fit();
+  return rest_area_m2;
 }
 
-std::vector<int> PatternMesh::dof_nodes() const {
+std::vector<int> PatternMesh::dof_nodes(const NodeCopies& all_copies) const {
   std::vector<int> dof_node(n_dofs(), -1);
-  for (int node = 0; node < n_nodes(); ++node)
-    for (const DofTriple& d : node_copies[node])
-      for (const GlobalDof i : d) dof_node[i] = node;
+  for (std::size_t node = 0; node < all_copies.size(); ++node)
+    for (const DofTriple& d : all_copies[node])
+      for (const GlobalDof i : d) dof_node[i] = static_cast<int>(node);
   return dof_node;
 }
 
-void PatternMesh::build_relevant_dofs() {
-  const std::vector<int> dof_node = dof_nodes();
-  std::vector<char> relevant_node(n_nodes(), 0);
-  for (int cell = 0; cell < n_cells(); ++cell)
-    for (const GlobalDof i : cell_dofs[cell]) relevant_node[dof_node[i]] = 1;
+void PatternMesh::keep_relevant_nodes(const NodeCopies& all_copies,
+                                      const std::vector<double>& rest_area_m2) {
+  std::vector<char> relevant_node(all_copies.size(), 0);
+  {
+    const std::vector<int> dof_node = dof_nodes(all_copies);
+    for (int cell = 0; cell < n_cells(); ++cell)
+      for (const GlobalDof i : cell_dofs[cell]) relevant_node[dof_node[i]] = 1;
+  }
   std::vector<GlobalDof> relevant;
+  global_nodes_.clear();
+  node_copies_ = CompactLists<DofTriple>();
+  node_rest_area_m2_.clear();
   owned_nodes.clear();
   seam_nodes_.clear();
-  for (int node = 0; node < n_nodes(); ++node) {
-    if (!relevant_node[node]) continue;
-    for (const DofTriple& d : node_copies[node])
-      relevant.insert(relevant.end(), d.begin(), d.end());
-    if (owned_dofs.is_element(node_copies[node].front()[0])) owned_nodes.push_back(node);
-    for (std::size_t k = 1; k < node_copies[node].size(); ++k)
-      if (owned_dofs.is_element(node_copies[node][k][0])) {
+  for (std::size_t global = 0; global < all_copies.size(); ++global) {
+    if (!relevant_node[global]) continue;
+    const std::vector<DofTriple>& node_copies = all_copies[global];
+    const int node = n_local_nodes();
+    global_nodes_.push_back(static_cast<int>(global));
+    node_copies_.push_back(node_copies);
+    node_rest_area_m2_.push_back(rest_area_m2[global]);
+    for (const DofTriple& d : node_copies) relevant.insert(relevant.end(), d.begin(), d.end());
+    if (owned_dofs.is_element(node_copies.front()[0])) owned_nodes.push_back(node);
+    for (std::size_t k = 1; k < node_copies.size(); ++k)
+      if (owned_dofs.is_element(node_copies[k][0])) {
         seam_nodes_.push_back(node);
         break;
       }
   }
+  global_nodes_.shrink_to_fit();
+  node_copies_.shrink_to_fit();
+  node_rest_area_m2_.shrink_to_fit();
+  owned_nodes.shrink_to_fit();
   std::sort(relevant.begin(), relevant.end());
   relevant_dofs = dealii::IndexSet(n_dofs());
   relevant_dofs.add_indices(relevant.begin(), relevant.end());
@@ -287,39 +317,36 @@ void PatternMesh::build_relevant_dofs() {
 }
 
 void PatternMesh::set_node_position(DofVector& x, int node, const Vec3& p) const {
-  for (const DofTriple& d : node_copies[node])
-    if (relevant_dofs.is_element(d[0]))
-      for (int c = 0; c < 3; ++c) x(d[c]) = p[c];
+  // A local node's copies are all relevant here (keep_relevant_nodes).
+  for (const DofTriple& d : copies(node))
+    for (int c = 0; c < 3; ++c) x(d[c]) = p[c];
 }
 
 void PatternMesh::copy_seams(DofVector& x) const {
   x.update_ghost_values();
   for (const int node : seam_nodes_) {
-    const DofTriple& carrier = node_copies[node].front();
-    for (std::size_t k = 1; k < node_copies[node].size(); ++k)
-      if (owned_dofs.is_element(node_copies[node][k][0]))
-        for (int c = 0; c < 3; ++c) x(node_copies[node][k][c]) = x(carrier[c]);
+    const ListView<DofTriple> node_copies = copies(node);
+    for (std::size_t k = 1; k < node_copies.size(); ++k)
+      if (owned_dofs.is_element(node_copies[k][0]))
+        for (int c = 0; c < 3; ++c) x(node_copies[k][c]) = x(node_copies.front()[c]);
   }
   x.update_ghost_values();
 }
 
 DofVector PatternMesh::dof_positions(const std::vector<Vec3>& positions_m) const {
   DofVector x = dof_vector();
-  for (int w = 0; w < mesh.n_vertices; ++w) set_node_position(x, w, positions_m[w]);
-  // Midpoints start on their chords; the contact predictor lifts those inside the body.
-  for (std::size_t e = 0; e < edge_ends.size(); ++e)
-    set_node_position(x, mesh.n_vertices + static_cast<int>(e),
-                      0.5 * (positions_m[edge_ends[e][0]] + positions_m[edge_ends[e][1]]));
+  for (int node = 0; node < n_local_nodes(); ++node) {
+    const int global = global_nodes_[node];
+    if (global < mesh.n_vertices) {
+      set_node_position(x, node, positions_m[global]);
+    } else {
+      // Midpoints start on their chords; the contact predictor lifts those inside the body.
+      const std::array<int, 2>& ends = edge_ends[global - mesh.n_vertices];
+      set_node_position(x, node, 0.5 * (positions_m[ends[0]] + positions_m[ends[1]]));
+    }
+  }
   x.update_ghost_values();
   return x;
-}
-
-dealii::Vector<double> PatternMesh::gather(const DofVector& x) const {
-  dealii::Vector<double> whole(n_dofs());
-  for (const GlobalDof i : owned_dofs) whole[i] = x(i);
-  MPI_Allreduce(MPI_IN_PLACE, whole.begin(), static_cast<int>(whole.size()), MPI_DOUBLE, MPI_SUM,
-                comm);
-  return whole;
 }
 
 template <typename T>
@@ -331,7 +358,7 @@ std::vector<T> PatternMesh::gather_nodes(const std::vector<T>& owned_values) con
   else
     zero = T::Zero();
   std::vector<T> whole(n_nodes(), zero);
-  for (int k = 0; k < n_owned_nodes(); ++k) whole[owned_nodes[k]] = owned_values[k];
+  for (int k = 0; k < n_owned_nodes(); ++k) whole[global_nodes_[owned_nodes[k]]] = owned_values[k];
   MPI_Allreduce(MPI_IN_PLACE, reinterpret_cast<double*>(whole.data()),
                 static_cast<int>(whole.size() * (sizeof(T) / sizeof(double))), MPI_DOUBLE, MPI_SUM,
                 comm);
@@ -340,10 +367,18 @@ std::vector<T> PatternMesh::gather_nodes(const std::vector<T>& owned_values) con
 template std::vector<double> PatternMesh::gather_nodes(const std::vector<double>&) const;
 template std::vector<Vec3> PatternMesh::gather_nodes(const std::vector<Vec3>&) const;
 
-std::vector<Vec3> PatternMesh::vertex_positions(const dealii::Vector<double>& x) const {
-  std::vector<Vec3> positions(mesh.n_vertices);
-  for (int w = 0; w < mesh.n_vertices; ++w) positions[w] = vertex_position(x, master[w]);
+std::vector<Vec3> PatternMesh::vertex_positions(const DofVector& x) const {
+  std::vector<Vec3> owned_positions(n_owned_nodes());
+  for (int k = 0; k < n_owned_nodes(); ++k) owned_positions[k] = node_position(x, owned_nodes[k]);
+  std::vector<Vec3> positions = gather_nodes(owned_positions);
+  positions.resize(mesh.n_vertices);  // the vertices come first
   return positions;
+}
+
+std::vector<double> PatternMesh::node_rest_area_m2() const {
+  std::vector<double> owned_area_m2(n_owned_nodes());
+  for (int k = 0; k < n_owned_nodes(); ++k) owned_area_m2[k] = node_rest_area_m2_[owned_nodes[k]];
+  return gather_nodes(owned_area_m2);
 }
 
 }  // namespace tightfit

@@ -11,9 +11,15 @@
 // Nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
 // n_vertices + e. A node has one DoF triple per panel it lies in: the first carries it, the
 // others follow it (seam constraints, fem_constraints.h).
+//
+// Each rank keeps the per-node arrays of its relevant nodes only (those of its stored cells),
+// numbered locally: local node k is global node global_node(k), ascending in k; on one rank the
+// two numberings agree. Every per-node argument and array below is local unless it says
+// "global" or "of every node".
 #pragma once
 
 #include "core/backend.h"
+#include "core/compact_lists.h"
 #include "core/constrained_directions.h"
 #include "fem/cell_table.h"
 
@@ -49,11 +55,16 @@ class PatternMesh {
   PatternMesh(const Problem& problem, int element_degree, MPI_Comm communicator);
 
   GlobalDof n_dofs() const { return owned_dofs.size(); }
-  int n_nodes() const { return static_cast<int>(node_copies.size()); }
+  // The nodes of all ranks, and this rank's relevant ones.
+  int n_nodes() const { return n_nodes_; }
+  int n_local_nodes() const { return static_cast<int>(global_nodes_.size()); }
+  // Local node -> its global number, and back (-1: not a node of this rank).
+  int global_node(int node) const { return global_nodes_[node]; }
+  int find_node(int global) const;
   int n_vertices() const { return mesh.n_vertices; }
   // The cells this rank stores (see cell_dofs), and the cells of all ranks.
   int n_cells() const { return cell_dofs.size(); }
-  int n_all_cells() const { return static_cast<int>(cell_vertices.size()); }
+  int n_all_cells() const { return n_all_cells_; }
   int n_local_dofs() const { return static_cast<int>(fe.n_dofs_per_cell()); }
   int n_element_nodes() const { return n_local_dofs() / 3; }
   // Copies stored cell k's DoFs into `dofs` (deal.II's constraints take them as a vector).
@@ -63,17 +74,17 @@ class PatternMesh {
   // Node-major index 3 a + c of a cell's local DoF i (node a, component c).
   int node_major(unsigned int i) const { return 3 * local_node[i] + local_component[i]; }
 
-  // Positions read from a DofVector (the DoFs must be relevant here) or from a whole vector.
-  template <typename VectorType>
-  Vec3 vertex_position(const VectorType& x, int unwelded) const {
-    return triple_value(x, vertex_dofs[unwelded]);
-  }
+  // Local node `node`'s DoF triple of each copy (the first carries it), and the carrying one.
+  ListView<DofTriple> copies(int node) const { return node_copies_[node]; }
+  const DofTriple& carrier(int node) const { return node_copies_[node].front(); }
+  // A local node's position in a DofVector (or another vector by global DoF).
   template <typename VectorType>
   Vec3 node_position(const VectorType& x, int node) const {
-    return triple_value(x, node_copies[node].front());
+    const DofTriple& d = carrier(node);
+    return Vec3(x(d[0]), x(d[1]), x(d[2]));
   }
-  // Writes p into every copy of the node this rank holds (owned or ghost); the copies other
-  // ranks own follow with copy_seams.
+  // Writes p into every copy of the local node (owned or ghost); the copies other ranks own
+  // follow with copy_seams.
   void set_node_position(DofVector& x, int node, const Vec3& p) const;
   // After set_node_position on the owned nodes: every copy this rank owns takes the value of
   // the copy that carries its node, and the ghosts are refreshed (collective).
@@ -83,15 +94,13 @@ class PatternMesh {
   // The DoF vector of welded vertices at `positions_m`, each edge midpoint on its chord (every
   // rank is given every vertex, so it fills its ghosts itself).
   DofVector dof_positions(const std::vector<Vec3>& positions_m) const;
-  // Every DoF's value on every rank (an MPI_Allreduce): for the output, which the case driver
-  // reads whole on every rank.
-  dealii::Vector<double> gather(const DofVector& x) const;
-  // Per-node values of the owned nodes (in the order of owned_nodes) -> those of every node, on
-  // every rank; T is double or Vec3.
+  // Per-node values of the owned nodes (in the order of owned_nodes) -> those of every node by
+  // global number, on every rank (collective); T is double or Vec3.
   template <typename T>
   std::vector<T> gather_nodes(const std::vector<T>& owned_values) const;
-  // The welded vertices' positions in a whole DoF vector (gather).
-  std::vector<Vec3> vertex_positions(const dealii::Vector<double>& x) const;
+  // Every welded vertex's position, on every rank (collective): for the output, which the case
+  // driver reads whole on every rank.
+  std::vector<Vec3> vertex_positions(const DofVector& x) const;
 
   const SimulationMesh& mesh;
   int element_degree;
@@ -107,7 +116,8 @@ class PatternMesh {
   // DoFs whose constraints it keeps.
   dealii::IndexSet relevant_dofs;
   std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
-  // The nodes whose carrying copy's DoFs this rank owns, ascending (on one rank, every node):
+  // The local nodes whose carrying copy's DoFs this rank owns, ascending (on one rank, every
+  // node):
   // this rank assembles their contact and keeps their contact state (contact_nodes.h), each
   // node's at its position k in this list.
   std::vector<int> owned_nodes;
@@ -119,14 +129,13 @@ class PatternMesh {
   // Local DoF i of a cell is component local_component[i] of element node local_node[i].
   std::vector<int> local_component, local_node;
 
-  std::vector<DofTriple> vertex_dofs;  // unwelded vertex -> its three DoFs
-  std::vector<int> master;             // welded vertex -> the unwelded copy that carries it
-  // Per node, the DoFs of each copy; the first carries it.
-  std::vector<std::vector<DofTriple>> node_copies;
-  std::vector<std::array<int, 2>> edge_ends;     // welded edge -> its two welded vertices
-  std::map<std::array<int, 2>, int> edge_index;  // sorted welded vertex pair -> welded edge
-  ConstrainedDirections node_constrained;        // the Problem's constraints at every node
-  // Per cell of all ranks (by active_cell_index), its corners' welded vertices.
+  // Degree 2, of every edge: welded edge -> its two welded vertices, and back from the sorted
+  // pair (empty for degree 1).
+  std::vector<std::array<int, 2>> edge_ends;
+  std::map<std::array<int, 2>, int> edge_index;
+  ConstrainedDirections node_constrained;  // the Problem's constraints at each local node
+  // Degree 2, per cell of all ranks (by active_cell_index): its corners' welded vertices, for
+  // the traction recovery, which every rank runs on the whole surface (empty for degree 1).
   std::vector<std::array<int, 3>> cell_vertices;
 
   // Per stored cell k: the cells this rank owns and those of other ranks that add to a row
@@ -154,34 +163,40 @@ class PatternMesh {
   // consistent share of the cell's area (sums to the cell's rest area), which carries the
   // fabric's weight.
   CellTable<double> cell_node_rest_area_m2;
-  // The same summed over each node's cells of all ranks (a seam node's copies together), m^2.
-  const std::vector<double>& node_rest_area_m2() const { return node_rest_area_m2_; }
+  // The same summed over each node's cells of all ranks (a seam node's copies together), m^2:
+  // of every node by global number, on every rank (collective).
+  std::vector<double> node_rest_area_m2() const;
 
   // Mean rest edge length over the triangles' edges (an interior edge counted twice), m.
   double mean_edge_m = 0.0;
-  // Per node, its own rest edge length h_k (contact_nodes.h), m: it sets the node's contact
-  // penalty and its force unit in Newton's stop rule.
+  // Per local node, its own rest edge length h_k (contact_nodes.h), m: it sets the node's
+  // contact penalty and its force unit in Newton's stop rule.
   std::vector<double> node_edge_m;
 
  private:
-  std::vector<double> node_rest_area_m2_;
+  using NodeCopies = std::vector<std::vector<DofTriple>>;  // of every node, while building
+  int n_nodes_ = 0;
+  int n_all_cells_ = 0;
+  std::vector<int> global_nodes_;  // local node -> global node, ascending
+  CompactLists<DofTriple> node_copies_;
+  std::vector<double> node_rest_area_m2_;  // per local node
 
-  template <typename VectorType>
-  static Vec3 triple_value(const VectorType& x, const DofTriple& d) {
-    return Vec3(x(d[0]), x(d[1]), x(d[2]));
-  }
   // DoF -> the node it carries or follows (every DoF of every rank).
-  std::vector<int> dof_nodes() const;
-  // relevant_dofs, the partitioner, owned_nodes and seam_nodes_, from the stored cells.
-  void build_relevant_dofs();
-  // The nodes with a copy other than the carrying one among this rank's DoFs (copy_seams).
+  std::vector<int> dof_nodes(const NodeCopies& all_copies) const;
+  // The local nodes (those of the stored cells) and their copies and rest areas; relevant_dofs,
+  // the partitioner, owned_nodes and seam_nodes_.
+  void keep_relevant_nodes(const NodeCopies& all_copies, const std::vector<double>& rest_area_m2);
+  // The local nodes with a copy other than the carrying one among this rank's DoFs.
   std::vector<int> seam_nodes_;
   using Triangulation = dealii::parallel::shared::Triangulation<2>;
   // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.
   std::vector<Mat2> build_triangulation(Triangulation& triangulation) const;
-  void build_nodes(const dealii::DoFHandler<2>& dof_handler);
-  void build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
-                             const std::vector<Mat2>& to_grain_gradient);
+  // Every node's copies (edge_ends, edge_index and cell_vertices on the way).
+  NodeCopies build_nodes(const dealii::DoFHandler<2>& dof_handler);
+  // The stored cells' arrays; returns every node's rest area (node_rest_area_m2).
+  std::vector<double> build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
+                                            const std::vector<Mat2>& to_grain_gradient,
+                                            const NodeCopies& all_copies);
 };
 
 }  // namespace tightfit
