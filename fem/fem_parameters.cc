@@ -144,8 +144,12 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Largest penetration of a vertex in contact at a converged step, m.");
   prm.declare_entry("Tangent shift", "0", Double(0, 1e12),
                     "Added to the tangent's diagonal, N/m, for bodies other than a cylinder "
-                    "whose rigid motions are not pinned. It changes the Newton path, never the "
-                    "converged state.");
+                    "whose rigid motions are not pinned, and for fabric hanging slack off the "
+                    "body, whose Newton increments would otherwise reach metres (the tops: 10 "
+                    "N/m, docs/performance.md). It changes the Newton path; the residual is not "
+                    "shifted, so the step still ends at an equilibrium to the stop rule (where "
+                    "there are several, as for fabric slipping at friction's limit, not "
+                    "necessarily the same one).");
   prm.declare_entry("Residual shift factor", "1", Double(0, 1e12),
                     "Each Newton system is solved with the tangent shifted by theta |R|_max / h "
                     "(N/m; |R|_max the largest residual force, N; h the mean rest edge, m): this "
