@@ -44,16 +44,24 @@ std::map<std::string, double> parse_angles(const std::vector<std::string>& words
 }
 
 // Coarse to fine (Coarse edge length): the case's garment meshed at `coarse_m` is dressed by
-// `dress_coarse` in a scenario of its own; with a `settle_tolerance` (> 0) the welded coarse
-// garment then settles as the case's first load step would (gravity, friction), on the
-// mass-spring backend with its default settings and the rms stop rule at that relative
-// tolerance, so that the slow slide of a dressed top over the body is done on the cheap mesh;
+// `dress_coarse` in a scenario of its own; with a settle rule (a relative tolerance > 0) the
+// welded coarse garment then settles as the case's first load step would (gravity, friction),
+// on the mass-spring backend with its default settings, the rms stop rule at that relative
+// tolerance and the rule's net force tolerance and slide damping, so that the slow slide of a
+// dressed top over the body is done on the cheap mesh;
 // its state is carried to the case's mesh in pattern space (core/mesh_transfer.h). Fine vertices on
 // a coarse triangle's chord of the body may lie inside it by the chord's sagitta (h^2 / 8 R: about
 // 2 mm for 30 mm edges round a 5 cm arm); up to a quarter of a coarse edge they go back onto the
 // surface, as a dressing's own welded vertices do.
+struct CoarseSettle {
+  double relative_tolerance = 0.0;   // 0: the coarse garment is carried as dressed
+  double net_force_tolerance = 0.0;  // Mass spring/Net force tolerance of the settle
+  double slide_damping_per_s = 0.0;  // Mass spring/Slide damping of the settle
+};
+
 std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
-                                      double settle_tolerance, const PlacementMaker& dress_coarse) {
+                                      const CoarseSettle& settle_rule,
+                                      const PlacementMaker& dress_coarse) {
   if (scenario.parameters.garment.kind != "pattern file")
     throw std::invalid_argument(
         "Placement/Dressing/Coarse edge length: only a garment cut from a pattern "
@@ -72,10 +80,12 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
     throw SolverError(message.str());
   }
   std::vector<Vec3> coarse_x = dressed->start_positions_m;
-  if (settle_tolerance > 0) {
+  if (settle_rule.relative_tolerance > 0) {
     MassSpringParameters settle;
     settle.stop_norm = StopNorm::rms;
-    settle.relative_tolerance = settle_tolerance;
+    settle.relative_tolerance = settle_rule.relative_tolerance;
+    settle.net_force_tolerance = settle_rule.net_force_tolerance;
+    settle.slide_damping_per_s = settle_rule.slide_damping_per_s;
     settle.contact_updates = 0;
     MassSpringBackend backend(dressed->problem, settle);
     backend.set_positions(coarse_x);
@@ -158,6 +168,14 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
                        "settles as the first load step would (gravity, friction), on the "
                        "mass-spring backend with the rms stop rule at this relative tolerance "
                        "(Mass spring/Relative tolerance); 0: carried as dressed.");
+    prm.declare_double("Coarse net force tolerance", 0, 0, ParameterTree::unbounded,
+                       "With a Coarse settle tolerance: above 0, the coarse settle also asks the "
+                       "net force on the garment below this times its weight (Mass spring/Net "
+                       "force tolerance); 0: not asked.");
+    prm.declare_double("Coarse slide damping", 0, 0, ParameterTree::unbounded,
+                       "With a Coarse net force tolerance: above 0, the coarse settle slides at "
+                       "this damping until the garment's slide over the body has ended (Mass "
+                       "spring/Slide damping), 1/s; 0: off.");
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
     PanelWrap wrap;
@@ -182,7 +200,14 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     settings.maximum_frames = prm.get_integer("Maximum frames");
     settings.progress = &std::cout;
     const double coarse_m = prm.get_double("Coarse edge length");
-    const double settle_tolerance = prm.get_double("Coarse settle tolerance");
+    CoarseSettle settle;
+    settle.relative_tolerance = prm.get_double("Coarse settle tolerance");
+    settle.net_force_tolerance = prm.get_double("Coarse net force tolerance");
+    settle.slide_damping_per_s = prm.get_double("Coarse slide damping");
+    if (settle.slide_damping_per_s > 0 && !(settle.net_force_tolerance > 0))
+      throw std::invalid_argument(
+          "Coarse slide damping needs a Coarse net force tolerance above 0 (the end of the "
+          "slide is read on the net force limit)");
     PlacementMaker dress_here = [=](const Scenario& scenario) {
       PanelWrap placed = wrap;
       const std::vector<Panel>& panels = scenario.garment.panels;
@@ -221,7 +246,7 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     };
     if (!(coarse_m > 0)) return dress_here;
     return [=](const Scenario& scenario) {
-      return dressed_from_coarse(scenario, coarse_m, settle_tolerance, dress_here);
+      return dressed_from_coarse(scenario, coarse_m, settle, dress_here);
     };
   };
   return e;

@@ -3,12 +3,14 @@
 // inside the coarse outline and where the fine outline bulges past its chords; on the sewn top
 // a field that is one rigid placement of the flat layout of both panels stays one.
 #include "core/mesh_transfer.h"
+#include "core/tube_garment.h"
 #include "pattern/pattern_garment.h"
 #include "tests/pattern/aaron_bodice.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace tightfit::pattern {
@@ -86,6 +88,47 @@ TEST(MeshTransfer, FlatLayoutOfTheSewnTopStaysARigidPlacement) {
     }
   EXPECT_GT(front_only, fine.n_vertices / 3);
   EXPECT_LT(largest, 1e-12);
+}
+
+TEST(MeshTransfer, TubeWrappedWithoutStretchKeepsItsEdgesWithinTheChordBound) {
+  // The paper's "T" tube (two 0.157 x 0.24 m panels sewn into a ring) meshed with cells of
+  // w = 31.4 mm round it, wrapped without stretch round a cylinder of its own circumference
+  // (layout x = u goes to the angle u / R, layout y to the height), and carried to cells half
+  // as large. The coarse surface is a prism of flat facets, each a cell, the facets' normals
+  // theta = w / R apart. Inside a facet the carried map is affine: it shortens across the axis
+  // by the chord's share of its arc, s = sin(theta / 2) / (theta / 2), and keeps lengths along
+  // it; two points on neighbouring facets at distances a and b from their common edge are at
+  // least (a + b) cos(theta / 2) apart. So every carried edge keeps between s cos(theta / 2)
+  // and 1 of its rest length (the chord of a path is no longer than the path).
+  const double width_m = 0.157, height_m = 0.24;
+  const SimulationMesh coarse =
+      weld(make_tube_garment("T", width_m, height_m, 2, MeshSpacing{0.0314, 0.03}));
+  const SimulationMesh fine =
+      weld(make_tube_garment("T", width_m, height_m, 2, MeshSpacing{0.0157, 0.015}));
+  const double radius_m = 2 * width_m / (2 * M_PI);
+  std::vector<Vec3> coarse_m(coarse.n_vertices);
+  for (int u = 0; u < coarse.n_unwelded_vertices(); ++u) {
+    const Vec2& q = coarse.layout_positions_m[u];
+    const double angle = q.x() / radius_m;
+    coarse_m[coarse.welded_index[u]] =
+        Vec3(radius_m * std::sin(angle), -radius_m * std::cos(angle), q.y());
+  }
+  const std::vector<Vec3> fine_m = transfer_positions(coarse, coarse_m, fine);
+  const double theta = 0.0314 / radius_m;
+  const double lowest = std::sin(theta / 2) / (theta / 2) * std::cos(theta / 2);
+  double smallest = 2.0, largest = 0.0;
+  for (std::size_t t = 0; t < fine.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = fine.triangles[t][k], b = fine.triangles[t][(k + 1) % 3];
+      const double rest = (fine.rest_triangles[t][k] - fine.rest_triangles[t][(k + 1) % 3]).norm();
+      const double ratio = (fine_m[a] - fine_m[b]).norm() / rest;
+      smallest = std::min(smallest, ratio);
+      largest = std::max(largest, ratio);
+    }
+  EXPECT_GE(smallest, lowest);
+  EXPECT_LE(largest, 1.0 + 1e-12);
+  std::printf("carried edges at %.6f to %.6f of their rest lengths; bound %.6f to 1\n", smallest,
+              largest, lowest);
 }
 
 TEST(MeshTransfer, RefusesMeshesOfDifferentGarmentsAndWrongSizes) {
