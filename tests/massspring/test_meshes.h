@@ -1,11 +1,15 @@
 // Small meshes and deformed states shared by the mass-spring tests.
 #pragma once
 
+#include "core/backend.h"
 #include "core/garment.h"
+#include "core/material.h"
 #include "core/rectangle_panel.h"
 #include "core/types.h"
 
+#include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace tightfit::test {
@@ -19,6 +23,25 @@ inline SimulationMesh panel_mesh(double width_m, double height_m, const MeshSpac
   g.panels.back().grain_angle_rad = grain_angle_rad;
   return weld(g);
 }
+
+// A panel with its fabric and law, wired into a Problem (no body): the setup most solver tests
+// start from. Built in place, since the Problem points at the members.
+struct PanelProblem {
+  PanelProblem(double width_m, double height_m, const MeshSpacing& spacing,
+               const std::string& law_name = "linear biot")
+      : mesh(panel_mesh(width_m, height_m, spacing)), law(make_material_law(law_name, fabric)) {
+    problem.mesh = &mesh;
+    problem.law = law.get();
+    problem.fabric = &fabric;
+  }
+  PanelProblem(const PanelProblem&) = delete;
+  PanelProblem& operator=(const PanelProblem&) = delete;
+
+  SimulationMesh mesh;
+  FabricParameters fabric;
+  std::unique_ptr<MaterialLaw> law;
+  Problem problem;
+};
 
 // The mesh's flat layout in the z = 0 plane.
 inline std::vector<Vec3> flat_positions(const SimulationMesh& mesh) {

@@ -28,13 +28,9 @@ TEST(SlideDamping, FreeFallFollowsTheClosedFormAtTheSlideDampingAndIsReportedSti
   // A 0.3 x 0.2 m panel, no body, falling from rest: z(t) = z0 - (g / c)(t - (1 - e^(-c t)) / c)
   // at c = c_s, never calm (its drag c_s M |v| passes half the net force limit within a few
   // frames), so the step ends at its frame limit naming the slide.
-  const SimulationMesh mesh = test::panel_mesh(0.3, 0.2, MeshSpacing{0.02, 0.02});
-  const FabricParameters fabric;
-  const auto law = make_material_law("linear biot", fabric);
-  Problem problem;
-  problem.mesh = &mesh;
-  problem.law = law.get();
-  problem.fabric = &fabric;
+  test::PanelProblem panel(0.3, 0.2, MeshSpacing{0.02, 0.02});
+  const SimulationMesh& mesh = panel.mesh;
+  Problem& problem = panel.problem;
   MassSpringParameters parameters;
   parameters.quasi_static_frames = 0;
   parameters.maximum_frames = 1500;

@@ -133,19 +133,15 @@ TEST(MassSpringSolver, NetForceToleranceHoldsTheSettleUntilTheGarmentIsBalancedA
 // 0.3 x 0.2 m panel of 3 x 4 cells of 0.1 x 0.05 m (15 edges of 0.1 m, 16 of 0.05 m, 12
 // diagonals).
 TEST(MassSpringSolver, StopRuleThresholdFormula) {
-  const SimulationMesh mesh = test::panel_mesh(0.3, 0.2, MeshSpacing{0.1, 0.05});
-  const FabricParameters fabric;
-  const auto law = make_material_law("linear biot", fabric);
-  Problem problem;
-  problem.mesh = &mesh;
-  problem.law = law.get();
-  problem.fabric = &fabric;
+  test::PanelProblem panel(0.3, 0.2, MeshSpacing{0.1, 0.05});
+  const SimulationMesh& mesh = panel.mesh;
+  Problem& problem = panel.problem;
   MassSpringBackend backend(problem, MassSpringParameters{});
   backend.set_positions(test::flat_positions(mesh));
   const StepReport report = backend.solve(LoadStep{0, 1.0, false});
   const double h = (15 * 0.1 + 16 * 0.05 + 12 * std::hypot(0.1, 0.05)) / 43;
-  const double expected = MassSpringParameters{}.relative_tolerance * law->stiffness_scale() * h *
-                          h / std::sqrt(0.3 * 0.2);
+  const double expected = MassSpringParameters{}.relative_tolerance * panel.law->stiffness_scale() *
+                          h * h / std::sqrt(0.3 * 0.2);
   EXPECT_NEAR(report.tolerance_N, expected, 1e-12 * expected);
 }
 
@@ -300,13 +296,9 @@ TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
 
 TEST(MassSpringSolver, RestStateIsStableWithoutAFrame) {
   // A flat panel at its rest shape, no body, no gravity: in equilibrium from the start.
-  const SimulationMesh mesh = test::panel_mesh(0.1, 0.1, MeshSpacing{});
-  const FabricParameters fabric;
-  const auto law = make_material_law("st venant kirchhoff", fabric);
-  Problem problem;
-  problem.mesh = &mesh;
-  problem.law = law.get();
-  problem.fabric = &fabric;
+  test::PanelProblem panel(0.1, 0.1, MeshSpacing{}, "st venant kirchhoff");
+  const SimulationMesh& mesh = panel.mesh;
+  Problem& problem = panel.problem;
   MassSpringBackend backend(problem, MassSpringParameters{});
   backend.set_positions(test::flat_positions(mesh));
   const std::vector<Vec3> start = test::flat_positions(mesh);

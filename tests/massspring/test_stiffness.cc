@@ -65,13 +65,9 @@ TEST(MassSpringStiffness, MembraneAndContactMatchFiniteDifferences) {
 TEST(MassSpringStiffness, BendingGaussNewtonIsTheHessianOfAFlatSheet) {
   // A flat panel at rest, bending rigidity on: the membrane has no stress and every hinge angle
   // is zero, where k grad(theta) grad(theta)^T is the hinge energy's whole Hessian.
-  const SimulationMesh mesh = test::panel_mesh(0.04, 0.04, MeshSpacing{0.01, 0.01});
-  const FabricParameters fabric;
-  const auto law = make_material_law("linear biot", fabric);
-  Problem problem;
-  problem.mesh = &mesh;
-  problem.law = law.get();
-  problem.fabric = &fabric;
+  test::PanelProblem panel(0.04, 0.04, MeshSpacing{0.01, 0.01});
+  const SimulationMesh& mesh = panel.mesh;
+  Problem& problem = panel.problem;
   MassSpringParameters parameters;
   parameters.bending_rigidity_N_m = 1e-3;
   MassSpringBackend backend(problem, parameters);
