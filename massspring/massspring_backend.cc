@@ -498,6 +498,8 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
          << ", net force on the garment " << net_N.norm() << " N (" << net_N.x() << ", "
          << net_N.y() << ", " << net_N.z() << ")";
   if (net_force_limit_N_ > 0) detail << " < " << net_force_limit_N_ << " N";
+  // How many vertices the committed friction anchors let slide (Coulomb cone reached).
+  if (friction_.active()) detail << ", " << slipping << " vertices slipping";
   detail << ", largest penetration " << penetration_m << " m, " << report.wall_seconds << " s ("
          << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
   if (halvings > 0) detail << "; " << history.text();

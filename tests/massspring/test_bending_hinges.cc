@@ -1,5 +1,6 @@
 // Angular bending springs: forces are minus the gradient of the hinge energy, a flat or
 // rigidly moved flat sheet carries none, and the dihedral angle is the geometric one.
+#include "central_difference.h"
 #include "massspring/bending_hinges.h"
 #include "test_meshes.h"
 
@@ -43,17 +44,8 @@ TEST(BendingHinges, ForcesAreMinusTheCentralDifferenceOfTheEnergy) {
   ASSERT_GT(largest, 0.0);
   EXPECT_LT(sum.norm(), 1e-10 * largest);
   const double h = 1e-7;
-  for (std::size_t v = 0; v < x.size(); ++v)
-    for (int d = 0; d < 3; ++d) {
-      const double saved = x[v][d];
-      x[v][d] = saved + h;
-      const double plus = hinges.energy_J(x);
-      x[v][d] = saved - h;
-      const double minus = hinges.energy_J(x);
-      x[v][d] = saved;
-      EXPECT_NEAR(force[v][d], -(plus - minus) / (2 * h), 1e-6 * largest)
-          << "vertex " << v << " direction " << d;
-    }
+  testing::expect_force_is_minus_energy_gradient(
+      x, force, [&](const std::vector<Vec3>& y) { return hinges.energy_J(y); }, 1e-6 * largest, h);
 }
 
 TEST(BendingHinges, FlatAndRigidlyMovedFlatSheetsCarryNoBendingForce) {

@@ -1,5 +1,6 @@
 // Volino's triangle element: forces are minus the gradient of the element energy, momentum is
 // conserved and rigid motions give no force (invariants of any correct element).
+#include "central_difference.h"
 #include "massspring/triangle_elements.h"
 #include "test_meshes.h"
 
@@ -24,17 +25,9 @@ TEST_P(TriangleElementsForEveryLaw, ForcesAreMinusTheCentralDifferenceOfTheEnerg
   const double h = 1e-7;  // m
   double largest = 0.0;
   for (const Vec3& f : force) largest = std::max(largest, f.norm());
-  for (std::size_t v = 0; v < x.size(); ++v)
-    for (int d = 0; d < 3; ++d) {
-      const double saved = x[v][d];
-      x[v][d] = saved + h;
-      const double plus = elements.energy_J(x);
-      x[v][d] = saved - h;
-      const double minus = elements.energy_J(x);
-      x[v][d] = saved;
-      EXPECT_NEAR(force[v][d], -(plus - minus) / (2 * h), 1e-6 * largest)
-          << "vertex " << v << " direction " << d;
-    }
+  testing::expect_force_is_minus_energy_gradient(
+      x, force, [&](const std::vector<Vec3>& y) { return elements.energy_J(y); }, 1e-6 * largest,
+      h);
 }
 
 TEST_P(TriangleElementsForEveryLaw, ForcesSumToZeroAndRotateWithTheGarment) {
