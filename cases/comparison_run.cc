@@ -17,7 +17,7 @@ namespace tightfit {
 namespace {
 
 // What the comparison reads of a step of the first backend once the second has reached it: each
-// vertex's pressure and contact flag (9 bytes a vertex, where the whole step holds about 160).
+// vertex's pressure and contact flag (9 bytes a vertex, where the whole step holds about 140).
 struct VertexPressures {
   std::vector<double> pressure_Pa;
   std::vector<char> contact;

@@ -4,7 +4,7 @@
 //
 // What the driver keeps of a finished step is its scalars (the pressure summary, the closed
 // form, the measurements' columns, the solver's report): its per-vertex arrays (the backend's
-// SurfaceState and the pressure field, about 160 bytes a vertex) are released once the step is
+// SurfaceState and the pressure field, about 140 bytes a vertex) are released once the step is
 // written, so memory does not grow with the number of load steps. The last step that finished
 // keeps them on the first rank only, for the measurements' closing files (Measurement::
 // after_run: the angular profile, the pictures) and for the caller; a caller that needs every

@@ -31,7 +31,7 @@ struct StepMeasurement {
   bool holds_vertex_arrays() const { return state.size() > 0 || !field.pressure_Pa.empty(); }
 };
 
-// Frees the step's per-vertex arrays (state and field: about 160 bytes a vertex), keeping its
+// Frees the step's per-vertex arrays (state and field: about 140 bytes a vertex), keeping its
 // scalars (summary, closed form, the measurements' columns) and the field's definitions.
 void release_vertex_arrays(StepMeasurement& m);
 
