@@ -79,6 +79,8 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
       l.run.backend = backend.name;
       l.run.failure = e.what();
     }
+    // The study reads the steps' scalars only; each level's files are written.
+    for (StepMeasurement& m : l.run.steps) release_vertex_arrays(m);
     for (const StepMeasurement& m : l.run.steps)
       if (table)
         table->write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step,
@@ -150,8 +152,7 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
                                 std::to_string(n_levels));
   // Check every level's setup before running any, so a bad mesh scale does not surface after
   // the coarse levels have run for minutes.
-  for (int level = 0; level < n_levels; ++level)
-    make_scenario(level_parameters(parameters, level));
+  for (int level = 0; level < n_levels; ++level) make_scenario(level_parameters(parameters, level));
 
   // Under MPI every rank runs the study (the FE solves are distributed); the first writes the
   // tables, as run_scenario does for each level's own.

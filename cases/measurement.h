@@ -39,15 +39,19 @@ class Measurement {
                                      const StepMeasurement& /*step*/) const {
     return {};
   }
-  // Called after every load step is measured, and once when the run ends (with every step
-  // that finished), to write files of its own into `files.directory`.
+  // Called after every load step is measured (on every rank, the step whole), and once when
+  // the run ends (with every step that finished), to write files of its own into
+  // `files.directory`. At the end only the last step holds its per-vertex arrays (state, field),
+  // and only on the first rank, the one that writes (files.write_tables): what a measurement
+  // needs of the others' it takes in after_step.
   virtual void after_step(const Scenario& /*scenario*/, const StepMeasurement& /*step*/,
                           const RunFiles& /*files*/) {}
   virtual void after_run(const Scenario& /*scenario*/,
                          const std::vector<StepMeasurement>& /*steps*/, const RunFiles& /*files*/) {
   }
   // Tables shown on screen when the run ends, after the pressure summary (every step that
-  // finished is in `steps`, possibly none).
+  // finished is in `steps`, possibly none). Called on every rank, when the steps' per-vertex
+  // arrays are released: a table of per-vertex values is made from what after_step kept.
   virtual std::vector<TextTable> summary_tables(
       const Scenario& /*scenario*/, const std::vector<StepMeasurement>& /*steps*/) const {
     return {};

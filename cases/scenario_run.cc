@@ -87,11 +87,13 @@ void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_s
 }  // namespace
 
 RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
-                       const std::string& output_dir, std::ostream& log) {
+                       const std::string& output_dir, std::ostream& log,
+                       const StepObserver& on_step) {
   namespace fs = std::filesystem;
   const OutputSettings& output = scenario.parameters.output;
-  // Every rank holds the whole result. The first writes the tables, the body and the
-  // collections; the garment is written by every rank, one piece each, when there are several.
+  // Every rank holds the whole result's scalars (the steps' per-vertex arrays are released
+  // once written, scenario_run.h). The first writes the tables, the body and the collections; the
+  // garment is written by every rank, one piece each, when there are several.
   const bool write_tables = output.write_files && output.is_first_rank();
   const bool write_garment = output.write_files && output.write_vtu;
   const bool write_series = write_tables && output.write_vtu;  // .pvd collections, body
@@ -137,6 +139,8 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       throw_if_interrupted(interruption_signal(), "before load step " + std::to_string(step));
       result.steps.push_back(
           solve_and_measure(scenario, *backend, static_cast<int>(step), measurements));
+      // The step before is written and no one reads its arrays any more.
+      if (result.steps.size() > 1) release_vertex_arrays(result.steps[result.steps.size() - 2]);
     } catch (const SolverError& e) {
       stop(e.what());
       break;
@@ -178,6 +182,9 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       }
     });
     print_progress(log, m, scenario.alphas.size());
+    if (on_step) on_step(m);
+    // The other ranks' piece of the garment is on disk; the closing files are the first's.
+    if (!output.is_first_rank()) release_vertex_arrays(result.steps.back());
   }
   for (const auto& measurement : measurements) {
     output.on_this_rank([&] { measurement->after_run(scenario, result.steps, files); });

@@ -18,6 +18,15 @@ std::vector<std::string> measurement_columns(const Measurements& measurements) {
   return columns;
 }
 
+void release_vertex_arrays(StepMeasurement& m) {
+  // Assigning empty containers (not clear()) gives the memory back.
+  m.state = SurfaceState{};
+  PressureField definitions_only;
+  definitions_only.area_definition = m.field.area_definition;
+  definitions_only.definition = m.field.definition;
+  m.field = std::move(definitions_only);
+}
+
 StepMeasurement solve_and_measure(Scenario& scenario, Backend& backend, int step,
                                   const Measurements& measurements) {
   const LoadStep load = scenario.prepare_step(step);

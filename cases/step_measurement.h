@@ -26,7 +26,14 @@ struct StepMeasurement {
   std::vector<double> extra_values;  // the measurements' columns (measurement_columns), in order
 
   double p_mean_Pa() const { return summary.mean_Pa; }
+  // Whether the step still holds its per-vertex arrays (state, field): run_scenario releases
+  // them once the step is written, but for the last step on the first rank.
+  bool holds_vertex_arrays() const { return state.size() > 0 || !field.pressure_Pa.empty(); }
 };
+
+// Frees the step's per-vertex arrays (state and field: about 140 bytes a vertex), keeping its
+// scalars (summary, closed form, the measurements' columns) and the field's definitions.
+void release_vertex_arrays(StepMeasurement& m);
 
 using Measurements = std::vector<std::unique_ptr<Measurement>>;
 

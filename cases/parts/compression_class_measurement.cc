@@ -26,10 +26,16 @@ class CompressionClassMeasurement final : public Measurement {
     const double p = ankle_mmHg(scenario, m);
     return {p, std::isnan(p) ? p : ral_gz_387_class(p).number};
   }
-  std::vector<TextTable> summary_tables(const Scenario& scenario,
+  // The latest step's pressure, for the line on screen (the run keeps no step's field).
+  void after_step(const Scenario& scenario, const StepMeasurement& m,
+                  const RunFiles& /*files*/) override {
+    last_mmHg_ = ankle_mmHg(scenario, m);
+    last_step_ = m.step;
+  }
+  std::vector<TextTable> summary_tables(const Scenario& /*scenario*/,
                                         const std::vector<StepMeasurement>& steps) const override {
-    if (steps.empty()) return {};
-    const double p = ankle_mmHg(scenario, steps.back());
+    if (steps.empty() || last_step_ != steps.back().step) return {};
+    const double p = last_mmHg_;
     TextTable table(
         "Compression class (RAL-GZ 387: the mean pressure at B; I 18-21, II 23-32, "
         "III 34-46, IV >= 49 mmHg), load step " +
@@ -49,6 +55,8 @@ class CompressionClassMeasurement final : public Measurement {
   }
 
   BodyRegion ankle_;
+  double last_mmHg_ = std::numeric_limits<double>::quiet_NaN();
+  int last_step_ = -1;
 };
 
 }  // namespace

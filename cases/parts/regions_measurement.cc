@@ -26,16 +26,17 @@ class RegionsMeasurement final : public CsvMeasurement {
                                        "n_contact_vertices", "garment_area_m2", "note"}),
         regions_(std::move(regions)) {}
 
-  std::vector<TextTable> summary_tables(const Scenario& scenario,
+  std::vector<TextTable> summary_tables(const Scenario& /*scenario*/,
                                         const std::vector<StepMeasurement>& steps) const override {
-    if (steps.empty()) return {};
+    if (steps.empty() || last_step_ != steps.back().step) return {};
     const StepMeasurement& m = steps.back();
     TextTable table("Pressure by region, load step " + std::to_string(m.step) + " (alpha " +
                         format_fixed(m.alpha, 3) + "); mean over the contact area",
                     {"region", "contact area [m2]", "p_mean [Pa]", "p_mean [mmHg]", "p_peak [Pa]",
                      "p_peak [mmHg]", "force [N]", "note"});
-    for (const BodyRegion& region : regions_) {
-      const RegionPressure r = measure(scenario, m, region);
+    for (std::size_t k = 0; k < regions_.size(); ++k) {
+      const BodyRegion& region = regions_[k];
+      const RegionPressure& r = last_[k];
       table.add_row({region.name, format_number(r.contact_area_m2, 4), format_fixed(r.mean_Pa, 2),
                      format_fixed(units::to_mmHg(r.mean_Pa), 3), format_fixed(r.peak_Pa, 2),
                      format_fixed(units::to_mmHg(r.peak_Pa), 3), format_number(r.normal_force_N, 4),
@@ -48,8 +49,11 @@ class RegionsMeasurement final : public CsvMeasurement {
   std::vector<std::vector<CsvCell>> rows(const Scenario& scenario,
                                          const StepMeasurement& m) override {
     std::vector<std::vector<CsvCell>> rows;
+    last_.clear();
+    last_step_ = m.step;
     for (const BodyRegion& region : regions_) {
       const RegionPressure r = measure(scenario, m, region);
+      last_.push_back(r);
       rows.push_back({m.step, m.alpha, region.name, r.contact_area_m2, r.mean_Pa, r.peak_Pa,
                       units::to_mmHg(r.mean_Pa), units::to_mmHg(r.peak_Pa), r.normal_force_N,
                       r.n_contact_vertices, r.garment_area_m2, note(r)});
@@ -64,6 +68,9 @@ class RegionsMeasurement final : public CsvMeasurement {
   }
 
   std::vector<BodyRegion> regions_;
+  // The latest step's values, for the table on screen (the run keeps no step's field).
+  std::vector<RegionPressure> last_;
+  int last_step_ = -1;
 };
 
 }  // namespace

@@ -64,7 +64,9 @@ struct CaseFileRun {
   std::string log;
 };
 
-inline CaseFileRun run_case_file(const CaseFile& file, const std::string& backend) {
+// `on_step` sees each step whole (the run keeps the last one's per-vertex arrays only).
+inline CaseFileRun run_case_file(const CaseFile& file, const std::string& backend,
+                                 const StepObserver& on_step = {}) {
   CaseParameters parameters = file.parameters();
   parameters.output.write_files = false;
   CaseFileRun result;
@@ -72,7 +74,8 @@ inline CaseFileRun run_case_file(const CaseFile& file, const std::string& backen
   std::ostringstream log;
   result.run = run_scenario(
       *result.scenario,
-      [&](const Problem& problem) { return file.create_backend(backend, problem); }, "", log);
+      [&](const Problem& problem) { return file.create_backend(backend, problem); }, "", log,
+      on_step);
   result.log = log.str();
   return result;
 }

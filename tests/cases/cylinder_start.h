@@ -23,10 +23,11 @@ inline void start_cylinder_at(CaseFile& file, double alpha, double rest_radius_m
 }
 
 // Runs the case of `file` on `backend` at `alphas` only, the tube starting on the cylinder at
-// the first of them, writing no files; the run's progress goes to `log`.
+// the first of them, writing no files; the run's progress goes to `log`, each step whole to
+// `on_step`.
 inline RunResult run_on_cylinder(CaseFile& file, const std::string& backend,
                                  const std::vector<double>& alphas, double rest_radius_m,
-                                 std::ostream& log) {
+                                 std::ostream& log, const StepObserver& on_step = {}) {
   start_cylinder_at(file, alphas.front(), rest_radius_m);
   CaseParameters parameters = file.parameters();
   parameters.output.write_files = false;
@@ -34,7 +35,7 @@ inline RunResult run_on_cylinder(CaseFile& file, const std::string& backend,
   setup->alphas = alphas;
   return run_scenario(
       *setup, [&](const Problem& problem) { return file.create_backend(backend, problem); }, "",
-      log);
+      log, on_step);
 }
 
 }  // namespace tightfit::testing

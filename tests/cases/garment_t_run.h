@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 namespace tightfit {
 
@@ -22,6 +23,8 @@ struct GarmentTRun {
   static constexpr double rest_radius_m = 2 * 0.157 / (2 * M_PI);  // R0, alpha = r / R0
   std::unique_ptr<Scenario> scenario;
   RunResult result;
+  // Every step whole, per-vertex arrays included (the run keeps the last one's only).
+  std::vector<StepMeasurement> measured;
 };
 
 // The run ends with the body shaped for its last step: prepare_step() reshapes it.
@@ -38,8 +41,8 @@ inline GarmentTRun& garment_t_run() {
     std::ostringstream log;
     r.result = run_scenario(
         *r.scenario,
-        [&](const Problem& problem) { return file.create_backend("massspring", problem); }, "",
-        log);
+        [&](const Problem& problem) { return file.create_backend("massspring", problem); }, "", log,
+        [&](const StepMeasurement& m) { r.measured.push_back(m); });
     if (!r.result.completed) ADD_FAILURE() << r.result.failure << "\n" << log.str();
     return r;
   }();

@@ -33,8 +33,8 @@ TEST(BodySurfacePressure, RefinedCylinderStaysOnTheCylinder) {
 
 TEST(BodySurfacePressure, UnderTheTubeTheBodyReadsTheGarmentsPressureAndForce) {
   GarmentTRun& run = garment_t_run();
-  ASSERT_EQ(run.result.steps.size(), 2u);
-  for (const StepMeasurement& m : run.result.steps) {
+  ASSERT_EQ(run.measured.size(), 2u);
+  for (const StepMeasurement& m : run.measured) {
     run.scenario->prepare_step(m.step);  // the body as it was at that step
     // Garment force: its contact vertices' pressure x area.
     double garment_force_N = 0.0, x_max = 0.0;

@@ -12,6 +12,7 @@
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
+#include "csv_rows.h"
 #include "cylinder_start.h"
 
 #include <gtest/gtest.h>
@@ -25,28 +26,6 @@
 
 namespace tightfit {
 namespace {
-
-// A CSV file as rows of named fields (the files tightfit writes: no quoted commas here).
-std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::map<std::string, std::string>> rows;
-  std::string line;
-  std::vector<std::string> header;
-  auto split = [](const std::string& text) {
-    std::vector<std::string> fields;
-    std::stringstream s(text);
-    for (std::string f; std::getline(s, f, ',');) fields.push_back(f);
-    return fields;
-  };
-  if (std::getline(in, line)) header = split(line);
-  while (std::getline(in, line)) {
-    const auto fields = split(line);
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) row[header[i]] = fields[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 class CylinderTable2 : public ::testing::TestWithParam<const char*> {};
 
@@ -83,7 +62,7 @@ TEST_P(CylinderTable2, ClosedFormSensorsAndStampsAgree) {
     mean_Pa[m.step] = m.p_mean_Pa();
   }
 
-  const auto sensors = read_csv((out / "sensors.csv").string());
+  const auto sensors = testing::read_csv((out / "sensors.csv").string());
   ASSERT_EQ(sensors.size(), 11 * alphas.size());
   double worst_sensor = 0.0, covered_range[2] = {2.0, 0.0}, worst_grain_deg = 0.0;
   for (const auto& row : sensors) {
@@ -101,7 +80,7 @@ TEST_P(CylinderTable2, ClosedFormSensorsAndStampsAgree) {
     EXPECT_LT(std::abs(error), 2e-4) << row.at("sensor") << " step " << row.at("step");
   }
   double worst_stamp = 0.0;
-  const auto stamps = read_csv((out / "stamps.csv").string());
+  const auto stamps = testing::read_csv((out / "stamps.csv").string());
   ASSERT_EQ(stamps.size(), 11 * alphas.size());
   for (const auto& row : stamps) {
     const double difference = std::stod(row.at("rel_difference"));

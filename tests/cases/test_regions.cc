@@ -72,7 +72,7 @@ class RegionsOnCylinder : public ::testing::Test {
     return region_pressure(parse_body_regions(definition).front(),
                            garment_t_run().scenario->mesh.triangles, m.state.positions_m, m.field);
   }
-  const std::vector<StepMeasurement>& steps() const { return garment_t_run().result.steps; }
+  const std::vector<StepMeasurement>& steps() const { return garment_t_run().measured; }
 };
 
 TEST_F(RegionsOnCylinder, MiddleSlabReadsClosedFormPressureAndArea) {
