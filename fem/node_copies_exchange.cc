@@ -8,9 +8,6 @@
 
 namespace tightfit {
 
-namespace {
-
-// One record per copy (node and DoFs): the least order and the summed area of its repeats.
 void merge_repeated_copies(std::vector<NodeCopy>& copies) {
   std::sort(copies.begin(), copies.end(), [](const NodeCopy& a, const NodeCopy& b) {
     return std::tie(a.node, a.dofs) < std::tie(b.node, b.dofs);
@@ -27,8 +24,6 @@ void merge_repeated_copies(std::vector<NodeCopy>& copies) {
   }
   copies.resize(kept);
 }
-
-}  // namespace
 
 std::vector<NodeCopy> exchange_node_copies(std::vector<NodeCopy> own, int n_nodes, MPI_Comm comm) {
   const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);

@@ -36,6 +36,10 @@ struct NodeCopy {
   }
 };
 
+// One record per copy (node and DoFs) of `copies`, sorted by node: the least order and the
+// summed area of its repeats.
+void merge_repeated_copies(std::vector<NodeCopy>& copies);
+
 // Collective. `own`: a record per cell and element node of this rank's cells (repeats of a copy
 // allowed; their shares are summed). Returns every copy of each node of `own`, nodes ascending,
 // each node's copies in carrying order (least `order` first), each with the node's whole rest

@@ -151,6 +151,7 @@ std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_
   std::vector<double> node_area_m2(n_nodes_per_cell);
   std::vector<DofTriple> triples(n_nodes_per_cell);
   std::vector<NodeCopy> node_copies;
+  std::size_t merged_copies = 0;
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned()) continue;
     const int t = static_cast<int>(cell->id().get_coarse_cell_id());
@@ -217,6 +218,12 @@ std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_
         copy.node = mesh.n_vertices + edge_index.at(ends);
       }
       node_copies.push_back(copy);
+    }
+    // A copy recurs in each of its cells (six times for an inner vertex): merged as they
+    // come, the list stays within about twice the rank's copies.
+    if (node_copies.size() >= 2 * merged_copies + 4096) {
+      merge_repeated_copies(node_copies);
+      merged_copies = node_copies.size();
     }
   }
   cell_dofs.shrink_to_fit();
