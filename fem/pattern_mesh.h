@@ -70,7 +70,7 @@ class PatternMesh {
   int n_all_cells() const { return n_all_cells_; }
   int n_local_dofs() const { return static_cast<int>(fe.n_dofs_per_cell()); }
   int n_element_nodes() const { return n_local_dofs() / 3; }
-  // Copies stored cell k's DoFs into `dofs` (deal.II's constraints take them as a vector).
+  // Copies own cell k's DoFs into `dofs` (deal.II's constraints take them as a vector).
   void get_cell_dofs(int k, std::vector<GlobalDof>& dofs) const {
     dofs.assign(cell_dofs[k].begin(), cell_dofs[k].end());
   }

@@ -72,7 +72,7 @@ dealii::TriangulationDescription::Description<2, 2> own_cells_description(
   description.settings = dealii::TriangulationDescription::Settings::default_setting;
   description.smoothing = dealii::Triangulation<2>::none;
   description.cell_infos.resize(1);
-  // The stored cells' vertices, numbered in the order they are met.
+  // The own and ghost cells' vertices, numbered in the order they are met.
   std::vector<int> local_vertex(mesh.n_unwelded_vertices(), -1);
   for (std::size_t t = 0; t < panel_triangles.size(); ++t) {
     if (!stored(t)) continue;
