@@ -4,6 +4,7 @@
 #include "fem/rigid_motion_pin.h"
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <cmath>
 #include <utility>
@@ -75,15 +76,18 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
   }
   constraints.close();
 
-  // Each rank stores only its own rows (entries in other rows are dropped as they are added),
-  // from its stored cells: its own and those that add to its rows.
+  // Each rank adds its own cells' entries, in its relevant rows (a seam copy's go to the row
+  // of the copy that carries its node), and sends those of other ranks' rows to their owners:
+  // each then stores only its own rows.
   {
-    dealii::DynamicSparsityPattern sparsity(pattern.n_dofs(), pattern.n_dofs(), pattern.owned_dofs);
+    dealii::DynamicSparsityPattern sparsity(pattern.n_dofs(), pattern.n_dofs(), relevant);
     std::vector<GlobalDof> dofs;
     for (int cell = 0; cell < pattern.n_cells(); ++cell) {
       pattern.get_cell_dofs(cell, dofs);
       constraints.add_entries_local_to_global(dofs, sparsity, false);
     }
+    dealii::SparsityTools::distribute_sparsity_pattern(sparsity, pattern.owned_dofs, comm,
+                                                       relevant);
     system.tangent.reinit(pattern.owned_dofs, pattern.owned_dofs, sparsity, comm);
   }
   release_freed_memory();

@@ -69,7 +69,6 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
   // Each rank its own cells' points, summed over the ranks: every rank recovers all of it.
   std::vector<double> point_area_m2(pattern.n_all_cells() * n_points, 0.0);
   for (int cell = 0; cell < pattern.n_cells(); ++cell) {
-    if (!pattern.cell_owned[cell]) continue;
     for (unsigned int q = 0; q < n_points; ++q) {
       // dA = |x,1 x x,2| dA_grain, x,i the columns of F = dx/dX_grain.
       Mat32 F = Mat32::Zero();

@@ -68,7 +68,6 @@ void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
   Eigen::MatrixXd hessian;
   std::vector<GlobalDof> dofs;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
-    if (!pattern_.cell_owned[cell]) continue;
     cell_kernel(cell, x, gradient, with_tangent ? &hessian : nullptr);
     pattern_.get_cell_dofs(cell, dofs);
     for (unsigned int i = 0; i < n_local; ++i) {
@@ -121,7 +120,6 @@ std::vector<Vec3> MembraneAssembly::internal_force_N(const DofVector& x) const {
   DofVector gradient_dofs = pattern_.dof_vector();
   Eigen::VectorXd gradient;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
-    if (!pattern_.cell_owned[cell]) continue;
     cell_kernel(cell, x, gradient, nullptr);
     for (unsigned int i = 0; i < pattern_.cell_dofs[cell].size(); ++i)
       gradient_dofs(pattern_.cell_dofs[cell][i]) += gradient[pattern_.node_major(i)];

@@ -3,12 +3,13 @@
 #include "fem/contact_nodes.h"
 #include "fem/freed_memory.h"
 #include "fem/panel_triangles.h"
+#include "fem/pattern_partition.h"
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/reference_cell.h>
-#include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -40,23 +41,30 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
       fe(dealii::FE_SimplexP<2>(degree), 3),
       mapping(dealii::FE_SimplexP<2>(1)),
       quadrature(gauss_points_1d(degree)) {
+  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
+    local_component.push_back(fe.system_to_component_index(i).first);
+    local_node.push_back(fe.system_to_component_index(i).second);
+  }
+  const std::vector<Triangle> panel_triangles = unwelded_triangles(mesh);
+  n_all_cells_ = static_cast<int>(panel_triangles.size());
+  if (element_degree == 2) number_edges(panel_triangles);
+  n_nodes_ = mesh.n_vertices + static_cast<int>(edge_ends.size());
   {
-    // The triangulation and DoF handler live only while the arrays are built.
-    Triangulation triangulation(comm);
-    const std::vector<Mat2> to_grain_gradient = build_triangulation(triangulation);
+    // The triangulation (this rank's cells and their ghosts) and the DoF handler live only
+    // while the arrays are built.
+    dealii::parallel::fullydistributed::Triangulation<2> triangulation(comm);
+    triangulation.create_triangulation(
+        own_cells_description(mesh, panel_triangles, partition_triangles(mesh, comm), comm));
     dealii::DoFHandler<2> dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
-      local_component.push_back(fe.system_to_component_index(i).first);
-      local_node.push_back(fe.system_to_component_index(i).second);
-    }
-    n_all_cells_ = static_cast<int>(triangulation.n_active_cells());
-    // Every node's copies and rest area live only while this rank picks its own.
-    const NodeCopies all_copies = build_nodes(dof_handler);
-    n_nodes_ = static_cast<int>(all_copies.size());
-    keep_relevant_nodes(all_copies,
-                        build_cell_quadrature(dof_handler, to_grain_gradient, all_copies));
+    keep_relevant_nodes(
+        exchange_node_copies(build_cells(dof_handler, panel_triangles), n_nodes_, comm));
+  }
+  if (element_degree == 2) {
+    // Each cell's corners from the rank that owns it (the others add zeros).
+    MPI_Allreduce(MPI_IN_PLACE, cell_vertices.data(), static_cast<int>(3 * cell_vertices.size()),
+                  MPI_INT, MPI_SUM, comm);
   }
   dofs_in_node_blocks = owned_dofs.is_contiguous() && owned_dofs.n_elements() % 3 == 0 &&
                         (owned_dofs.n_elements() == 0 || owned_dofs.nth_index_in_set(0) % 3 == 0);
@@ -91,67 +99,28 @@ int PatternMesh::find_node(int global) const {
                                                     : -1;
 }
 
-std::vector<Mat2> PatternMesh::build_triangulation(Triangulation& triangulation) const {
-  const std::vector<Triangle> panel_triangles = unwelded_triangles(mesh);
-  std::vector<dealii::Point<2>> vertices;
-  for (const Vec2& x : mesh.layout_positions_m) vertices.emplace_back(x.x(), x.y());
-  std::vector<dealii::CellData<2>> cells(panel_triangles.size(), dealii::CellData<2>(3));
-  std::map<std::array<int, 3>, int> triangle_of_corners;
-  for (std::size_t t = 0; t < panel_triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) cells[t].vertices[k] = panel_triangles[t][k];
-    cells[t].material_id = mesh.triangle_panel[t];
-    std::array<int, 3> key = panel_triangles[t];
-    std::sort(key.begin(), key.end());
-    triangle_of_corners[key] = static_cast<int>(t);
-  }
-  triangulation.create_triangulation(vertices, cells, dealii::SubCellData());
-
-  // Per cell, the affine map from layout to grain coordinates, J = dX_grain / dX_layout, read
-  // off the rest triangle; shape gradients then transform as grad_grain = J^-T grad_layout.
-  std::vector<Mat2> to_grain_gradient(triangulation.n_active_cells(), Mat2::Identity());
-  for (const auto& cell : triangulation.active_cell_iterators()) {
-    std::array<int, 3> key;
-    for (int v = 0; v < 3; ++v) key[v] = cell->vertex_index(v);
-    std::array<int, 3> sorted = key;
-    std::sort(sorted.begin(), sorted.end());
-    const int t = triangle_of_corners.at(sorted);
-    std::array<Vec2, 3> grain, layout;
-    for (int v = 0; v < 3; ++v) {
-      const int k =
-          static_cast<int>(std::find(panel_triangles[t].begin(), panel_triangles[t].end(), key[v]) -
-                           panel_triangles[t].begin());
-      grain[v] = mesh.rest_triangles[t][k];
-      layout[v] = mesh.layout_positions_m[key[v]];
+void PatternMesh::number_edges(const std::vector<Triangle>& panel_triangles) {
+  // FE_SimplexP(2)'s midpoints follow its corners' edges (0,1), (1,2), (2,0), as here.
+  for (const Triangle& corners : panel_triangles)
+    for (int k = 0; k < 3; ++k) {
+      std::array<int, 2> ends{mesh.welded_index[corners[k]],
+                              mesh.welded_index[corners[(k + 1) % 3]]};
+      std::sort(ends.begin(), ends.end());
+      if (edge_index.emplace(ends, static_cast<int>(edge_ends.size())).second)
+        edge_ends.push_back(ends);
     }
-    Mat2 dg, dl;
-    dg << grain[1] - grain[0], grain[2] - grain[0];
-    dl << layout[1] - layout[0], layout[2] - layout[0];
-    const Mat2 J = dg * dl.inverse();
-    to_grain_gradient[cell->active_cell_index()] = J.inverse().transpose();
-  }
-  return to_grain_gradient;
 }
 
-PatternMesh::NodeCopies PatternMesh::build_nodes(const dealii::DoFHandler<2>& dof_handler) {
-  // A welded vertex's copies are its unwelded vertices' DoF triples, the first carrying it.
-  std::vector<DofTriple> vertex_dofs(mesh.n_unwelded_vertices());
-  for (const auto& cell : dof_handler.active_cell_iterators())
-    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-      for (unsigned int c = 0; c < 3; ++c)
-        vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
-  NodeCopies node_copies(mesh.n_vertices);
-  for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-    node_copies[mesh.welded_index[u]].push_back(vertex_dofs[u]);
-  // Linear triangles have no other nodes, and their output needs no corner lists.
-  if (element_degree == 1) return node_copies;
-
+std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_handler,
+                                               const std::vector<Triangle>& panel_triangles) {
+  const unsigned int n_local = fe.n_dofs_per_cell();
+  const unsigned int n_nodes_per_cell = n_local / 3;
   // Each element node's cell corners, from the barycentric coordinates of its support point
   // on the reference triangle (corners (0,0), (1,0), (0,1)): one corner for a vertex node,
   // two for an edge midpoint.
   const dealii::FiniteElement<2>& base = fe.base_element(0);
-  const unsigned int n_element_nodes = base.n_dofs_per_cell();
-  std::vector<std::vector<unsigned int>> corners(n_element_nodes);
-  for (unsigned int a = 0; a < n_element_nodes; ++a) {
+  std::vector<std::vector<unsigned int>> corners(n_nodes_per_cell);
+  for (unsigned int a = 0; a < n_nodes_per_cell; ++a) {
     const dealii::Point<2> p = base.get_unit_support_points()[a];
     const std::array<double, 3> barycentric{1.0 - p[0] - p[1], p[0], p[1]};
     for (unsigned int v = 0; v < 3; ++v)
@@ -159,47 +128,6 @@ PatternMesh::NodeCopies PatternMesh::build_nodes(const dealii::DoFHandler<2>& do
     if (corners[a].size() > 2)
       throw std::logic_error("fem backend: an element node inside the cell is not supported");
   }
-
-  // A midpoint's copies are the distinct DoF triples of the panel edges over one welded edge:
-  // the same edge seen from its two cells in one panel shares its DoFs; a seam edge has a copy
-  // in each panel.
-  const unsigned int n_local = fe.n_dofs_per_cell();
-  std::vector<GlobalDof> dofs(n_local);
-  std::vector<DofTriple> triples(n_element_nodes);
-  std::vector<std::vector<DofTriple>> midpoint_copies;
-  cell_vertices.assign(dof_handler.get_triangulation().n_active_cells(), {});
-  for (const auto& cell : dof_handler.active_cell_iterators()) {
-    cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < n_local; ++i) triples[local_node[i]][local_component[i]] = dofs[i];
-    for (unsigned int v = 0; v < 3; ++v)
-      cell_vertices[cell->active_cell_index()][v] = mesh.welded_index[cell->vertex_index(v)];
-    for (unsigned int a = 0; a < n_element_nodes; ++a) {
-      if (corners[a].size() == 1) continue;
-      std::array<int, 2> ends{};
-      for (std::size_t k = 0; k < 2; ++k)
-        ends[k] = mesh.welded_index[cell->vertex_index(corners[a][k])];
-      std::sort(ends.begin(), ends.end());
-      const auto [it, inserted] = edge_index.emplace(ends, static_cast<int>(edge_ends.size()));
-      if (inserted) {
-        edge_ends.push_back(ends);
-        midpoint_copies.emplace_back();
-      }
-      std::vector<DofTriple>& copies = midpoint_copies[it->second];
-      if (std::find(copies.begin(), copies.end(), triples[a]) == copies.end())
-        copies.push_back(triples[a]);
-    }
-  }
-  for (auto& copies : midpoint_copies) node_copies.push_back(std::move(copies));
-  return node_copies;
-}
-
-std::vector<double> PatternMesh::build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
-                                                       const std::vector<Mat2>& to_grain_gradient,
-                                                       const NodeCopies& all_copies) {
-  dealii::FEValues<2> fe_values(mapping, fe, quadrature,
-                                dealii::update_gradients | dealii::update_JxW_values);
-  const unsigned int n_local = fe.n_dofs_per_cell();
-  const unsigned int n_nodes_per_cell = n_local / 3;
   // Linear hats: the barycentric coordinates of the point on the reference triangle.
   hat_values.clear();
   shape_values.clear();
@@ -207,19 +135,12 @@ std::vector<double> PatternMesh::build_cell_quadrature(const dealii::DoFHandler<
     const dealii::Point<2> p = quadrature.point(q);
     hat_values.push_back({1.0 - p[0] - p[1], p[0], p[1]});
     shape_values.emplace_back(n_nodes_per_cell);
-    for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
-      shape_values[q][a] = fe.base_element(0).shape_value(a, p);
+    for (unsigned int a = 0; a < n_nodes_per_cell; ++a) shape_values[q][a] = base.shape_value(a, p);
   }
-  // A cell adds to the rows of its own DoFs and, for a seam copy, to those of the copy that
-  // carries the node (fem_constraints.h).
-  const std::vector<int> dof_node = dof_nodes(all_copies);
-  const auto adds_to_owned_row = [&](const std::vector<GlobalDof>& dofs) {
-    for (const GlobalDof i : dofs)
-      for (const GlobalDof row : {i, all_copies[dof_node[i]].front()[0]})
-        if (owned_dofs.is_element(row)) return true;
-    return false;
-  };
-  std::vector<double> rest_area_m2(all_copies.size(), 0.0);
+  if (element_degree == 2) cell_vertices.assign(n_all_cells_, {0, 0, 0});
+
+  dealii::FEValues<2> fe_values(mapping, fe, quadrature,
+                                dealii::update_gradients | dealii::update_JxW_values);
   cell_dofs.reset(n_local);
   cell_JxW_m2.reset(quadrature.size());
   cell_grad_grain.reset(quadrature.size() * n_nodes_per_cell);
@@ -228,77 +149,111 @@ std::vector<double> PatternMesh::build_cell_quadrature(const dealii::DoFHandler<
   std::vector<Vec2> grad_grain(quadrature.size() * n_nodes_per_cell);
   std::vector<GlobalDof> dofs(n_local);
   std::vector<double> node_area_m2(n_nodes_per_cell);
+  std::vector<DofTriple> triples(n_nodes_per_cell);
+  std::vector<NodeCopy> node_copies;
+  std::size_t merged_copies = 0;
   for (const auto& cell : dof_handler.active_cell_iterators()) {
-    const unsigned int c = cell->active_cell_index();
+    if (!cell->is_locally_owned()) continue;
+    const int t = static_cast<int>(cell->id().get_coarse_cell_id());
+    // The cell's corners among its triangle's, by position (deal.II may order them its own
+    // way): unwelded vertex, grain and layout coordinates.
+    std::array<int, 3> unwelded{};
+    std::array<Vec2, 3> grain, layout;
+    for (unsigned int v = 0; v < 3; ++v) {
+      layout[v] = Vec2(cell->vertex(v)[0], cell->vertex(v)[1]);
+      int k = 0;
+      for (int j = 1; j < 3; ++j)
+        if ((mesh.layout_positions_m[panel_triangles[t][j]] - layout[v]).squaredNorm() <
+            (mesh.layout_positions_m[panel_triangles[t][k]] - layout[v]).squaredNorm())
+          k = j;
+      unwelded[v] = panel_triangles[t][k];
+      grain[v] = mesh.rest_triangles[t][k];
+    }
+    // The affine map from layout to grain coordinates, J = dX_grain / dX_layout, read off the
+    // rest triangle; shape gradients then transform as grad_grain = J^-T grad_layout.
+    Mat2 dg, dl;
+    dg << grain[1] - grain[0], grain[2] - grain[0];
+    dl << layout[1] - layout[0], layout[2] - layout[0];
+    const Mat2 G = (dg * dl.inverse()).inverse().transpose();
+    // grain area / layout area = |det J| = 1/|det G|.
+    const double grain_area_ratio = 1.0 / std::abs(G.determinant());
+
     fe_values.reinit(cell);
     cell->get_dof_indices(dofs);
-    const Mat2& G = to_grain_gradient[c];
-    // grad_grain = G grad_layout with G = J^-T: grain area / layout area = |det J| = 1/|det G|.
-    const double grain_area_ratio = 1.0 / std::abs(G.determinant());
     std::fill(node_area_m2.begin(), node_area_m2.end(), 0.0);
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-      for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
-        node_area_m2[a] += shape_values[q][a] * fe_values.JxW(q) * grain_area_ratio;
-    for (unsigned int i = 0; i < n_local; ++i)
-      if (local_component[i] == 0) rest_area_m2[dof_node[dofs[i]]] += node_area_m2[local_node[i]];
-    if (!cell->is_locally_owned() && !adds_to_owned_row(dofs)) continue;
-
-    cell_index.push_back(static_cast<int>(c));
-    cell_dofs.push_back(dofs);
-    cell_owned.push_back(cell->is_locally_owned());
-    cell_grain_area_ratio.push_back(grain_area_ratio);
-    cell_node_rest_area_m2.push_back(node_area_m2);
     for (unsigned int q = 0; q < quadrature.size(); ++q) {
       JxW[q] = fe_values.JxW(q);
+      for (unsigned int a = 0; a < n_nodes_per_cell; ++a)
+        node_area_m2[a] += shape_values[q][a] * JxW[q] * grain_area_ratio;
       for (unsigned int i = 0; i < n_local; ++i) {
         if (local_component[i] != 0) continue;
         const dealii::Tensor<1, 2> g = fe_values.shape_grad(i, q);
         grad_grain[q * n_nodes_per_cell + local_node[i]] = G * Vec2(g[0], g[1]);
       }
     }
+    cell_index.push_back(t);
+    cell_dofs.push_back(dofs);
+    cell_grain_area_ratio.push_back(grain_area_ratio);
+    cell_node_rest_area_m2.push_back(node_area_m2);
     cell_JxW_m2.push_back(JxW);
     cell_grad_grain.push_back(grad_grain);
+    if (element_degree == 2)
+      for (unsigned int v = 0; v < 3; ++v) cell_vertices[t][v] = mesh.welded_index[unwelded[v]];
+
+    // Each element node's copy: a corner's unwelded vertex orders its welded vertex's copies,
+    // the cell its edge's midpoint's.
+    for (unsigned int i = 0; i < n_local; ++i) triples[local_node[i]][local_component[i]] = dofs[i];
+    for (unsigned int a = 0; a < n_nodes_per_cell; ++a) {
+      NodeCopy copy;
+      copy.dofs = triples[a];
+      copy.rest_area_m2 = node_area_m2[a];
+      if (corners[a].size() == 1) {
+        copy.order = unwelded[corners[a][0]];
+        copy.node = mesh.welded_index[copy.order];
+      } else {
+        std::array<int, 2> ends{mesh.welded_index[unwelded[corners[a][0]]],
+                                mesh.welded_index[unwelded[corners[a][1]]]};
+        std::sort(ends.begin(), ends.end());
+        copy.order = t;
+        copy.node = mesh.n_vertices + edge_index.at(ends);
+      }
+      node_copies.push_back(copy);
+    }
+    // A copy recurs in each of its cells (six times for an inner vertex): merged as they
+    // come, the list stays within about twice the rank's copies.
+    if (node_copies.size() >= 2 * merged_copies + 4096) {
+      merge_repeated_copies(node_copies);
+      merged_copies = node_copies.size();
+    }
   }
   cell_dofs.shrink_to_fit();
   cell_JxW_m2.shrink_to_fit();
   cell_grad_grain.shrink_to_fit();
   cell_node_rest_area_m2.shrink_to_fit();
-  return rest_area_m2;
+  return node_copies;
 }
 
-std::vector<int> PatternMesh::dof_nodes(const NodeCopies& all_copies) const {
-  std::vector<int> dof_node(n_dofs(), -1);
-  for (std::size_t node = 0; node < all_copies.size(); ++node)
-    for (const DofTriple& d : all_copies[node])
-      for (const GlobalDof i : d) dof_node[i] = static_cast<int>(node);
-  return dof_node;
-}
-
-void PatternMesh::keep_relevant_nodes(const NodeCopies& all_copies,
-                                      const std::vector<double>& rest_area_m2) {
-  std::vector<char> relevant_node(all_copies.size(), 0);
-  {
-    const std::vector<int> dof_node = dof_nodes(all_copies);
-    for (int cell = 0; cell < n_cells(); ++cell)
-      for (const GlobalDof i : cell_dofs[cell]) relevant_node[dof_node[i]] = 1;
-  }
+void PatternMesh::keep_relevant_nodes(const std::vector<NodeCopy>& node_copies) {
   std::vector<GlobalDof> relevant;
   global_nodes_.clear();
   node_copies_ = CompactLists<DofTriple>();
   node_rest_area_m2_.clear();
   owned_nodes.clear();
   seam_nodes_.clear();
-  for (std::size_t global = 0; global < all_copies.size(); ++global) {
-    if (!relevant_node[global]) continue;
-    const std::vector<DofTriple>& node_copies = all_copies[global];
+  std::vector<DofTriple> copies;
+  for (std::size_t begin = 0, end = 0; begin < node_copies.size(); begin = end) {
+    const int global = node_copies[begin].node;
+    copies.clear();
+    for (; end < node_copies.size() && node_copies[end].node == global; ++end)
+      copies.push_back(node_copies[end].dofs);
     const int node = n_local_nodes();
-    global_nodes_.push_back(static_cast<int>(global));
-    node_copies_.push_back(node_copies);
-    node_rest_area_m2_.push_back(rest_area_m2[global]);
-    for (const DofTriple& d : node_copies) relevant.insert(relevant.end(), d.begin(), d.end());
-    if (owned_dofs.is_element(node_copies.front()[0])) owned_nodes.push_back(node);
-    for (std::size_t k = 1; k < node_copies.size(); ++k)
-      if (owned_dofs.is_element(node_copies[k][0])) {
+    global_nodes_.push_back(global);
+    node_copies_.push_back(copies);
+    node_rest_area_m2_.push_back(node_copies[begin].rest_area_m2);
+    for (const DofTriple& d : copies) relevant.insert(relevant.end(), d.begin(), d.end());
+    if (owned_dofs.is_element(copies.front()[0])) owned_nodes.push_back(node);
+    for (std::size_t k = 1; k < copies.size(); ++k)
+      if (owned_dofs.is_element(copies[k][0])) {
         seam_nodes_.push_back(node);
         break;
       }

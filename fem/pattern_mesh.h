@@ -4,15 +4,20 @@
 // reference configuration that assembly reads at every Newton iteration (per cell: DoFs,
 // quadrature weights, shape gradients in grain axes). Built once; read-only afterwards.
 //
-// The deal.II triangulation and DoF handler only build these arrays: they are dropped once
-// the arrays are filled (on the 96600-vertex tube they held about 150 MB on every rank, since
-// the shared triangulation keeps every cell everywhere; docs/performance.md, MPI).
+// No rank ever holds a triangulation of every cell: the triangles are partitioned once
+// (pattern_partition.h), each rank builds a fully distributed triangulation of its own cells and
+// one layer of ghosts round them, and deal.II numbers the garment's DoFs over the ranks. A node's
+// copies across seams may lie on cells of ranks that share no cell: they are gathered by
+// communication (node_copies_exchange.h). The triangulation and DoF handler only build the
+// arrays below and are dropped once they are filled. Still replicated (read from the garment
+// mesh every rank holds): the welded edges of quadratic triangles (edge_ends, edge_index) and
+// each cell's corners (cell_vertices) for the traction recovery (docs/performance.md, MPI).
 //
 // Nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
 // n_vertices + e. A node has one DoF triple per panel it lies in: the first carries it, the
 // others follow it (seam constraints, fem_constraints.h).
 //
-// Each rank keeps the per-node arrays of its relevant nodes only (those of its stored cells),
+// Each rank keeps the per-node arrays of its relevant nodes only (those of its own cells),
 // numbered locally: local node k is global node global_node(k), ascending in k; on one rank the
 // two numberings agree. Every per-node argument and array below is local unless it says
 // "global" or "of every node".
@@ -22,11 +27,11 @@
 #include "core/compact_lists.h"
 #include "core/constrained_directions.h"
 #include "fem/cell_table.h"
+#include "fem/node_copies_exchange.h"
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_fe.h>
@@ -40,8 +45,6 @@
 
 namespace tightfit {
 
-using GlobalDof = dealii::types::global_dof_index;
-using DofTriple = std::array<GlobalDof, 3>;
 // The positions (and Newton increments) on this rank's DoFs and its ghosts, the other ranks' DoFs
 // that its cells and nodes read (PatternMesh::relevant_dofs): x(i) reads or writes DoF i by its
 // global number. Vector operations act on the owned entries and refresh the ghosts; a write to
@@ -50,8 +53,8 @@ using DofVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
 class PatternMesh {
  public:
-  // Distributes the cells over `comm`; throws std::invalid_argument for a degree other than
-  // 1 or 2.
+  // Partitions the cells over `comm` (collective); throws std::invalid_argument for a degree other
+  // than 1 or 2.
   PatternMesh(const Problem& problem, int element_degree, MPI_Comm communicator);
 
   GlobalDof n_dofs() const { return owned_dofs.size(); }
@@ -62,12 +65,12 @@ class PatternMesh {
   int global_node(int node) const { return global_nodes_[node]; }
   int find_node(int global) const;
   int n_vertices() const { return mesh.n_vertices; }
-  // The cells this rank stores (see cell_dofs), and the cells of all ranks.
+  // This rank's own cells (see cell_dofs), and the cells of all ranks.
   int n_cells() const { return cell_dofs.size(); }
   int n_all_cells() const { return n_all_cells_; }
   int n_local_dofs() const { return static_cast<int>(fe.n_dofs_per_cell()); }
   int n_element_nodes() const { return n_local_dofs() / 3; }
-  // Copies stored cell k's DoFs into `dofs` (deal.II's constraints take them as a vector).
+  // Copies own cell k's DoFs into `dofs` (deal.II's constraints take them as a vector).
   void get_cell_dofs(int k, std::vector<GlobalDof>& dofs) const {
     dofs.assign(cell_dofs[k].begin(), cell_dofs[k].end());
   }
@@ -108,11 +111,11 @@ class PatternMesh {
   dealii::FESystem<2> fe;
   dealii::MappingFE<2> mapping;
   dealii::QGaussSimplex<2> quadrature;
-  // This rank's DoFs (deal.II's partition of the cells over the ranks); its size() is the
-  // number of DoFs of all ranks.
+  // This rank's DoFs (deal.II's numbering over the ranks' cells); its size() is the number of
+  // DoFs of all ranks.
   dealii::IndexSet owned_dofs;
-  // The owned DoFs and the ghosts: every DoF of the stored cells (cell_dofs), and every copy of
-  // a node one of them belongs to. What this rank reads of x and of an increment, and the
+  // The owned DoFs and the ghosts: every DoF of the own cells (cell_dofs), and every copy of a
+  // node one of them belongs to. What this rank reads of x and of an increment, and the
   // DoFs whose constraints it keeps.
   dealii::IndexSet relevant_dofs;
   std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
@@ -134,21 +137,21 @@ class PatternMesh {
   std::vector<std::array<int, 2>> edge_ends;
   std::map<std::array<int, 2>, int> edge_index;
   ConstrainedDirections node_constrained;  // the Problem's constraints at each local node
-  // Degree 2, per cell of all ranks (by active_cell_index): its corners' welded vertices, for
-  // the traction recovery, which every rank runs on the whole surface (empty for degree 1).
+  // Degree 2, per cell of all ranks (by panel triangle): its corners' welded vertices in the
+  // order of the cell's own (that of hat_values), for the traction recovery, which every rank
+  // runs on the whole surface (empty for degree 1).
   std::vector<std::array<int, 3>> cell_vertices;
 
-  // Per stored cell k: the cells this rank owns and those of other ranks that add to a row
-  // it owns (across the partition's boundary, or through a seam to the copy that carries the
-  // node), which the matrix's sparsity needs; on one rank, every cell. cell_index[k] is the
-  // cell's active_cell_index. Then its DoFs, whether this rank owns it, and per quadrature
-  // point its JxW (layout area, m^2) and each element node's shape gradient in grain axes
-  // (1/m), node-major [q * n_element_nodes + a]. They live on the reference (pattern)
+  // Per own cell k (the other ranks' cells that add to a row this rank owns, across the
+  // partition's boundary or through a seam, are theirs to assemble: PETSc sends those entries,
+  // and the sparsity pattern's rows are exchanged likewise, fem_constraints.cc).
+  // cell_index[k] is the cell's panel triangle (mesh.triangles). Then its DoFs and per
+  // quadrature point its JxW (layout area, m^2) and each element node's shape gradient in grain
+  // axes (1/m), node-major [q * n_element_nodes + a]. They live on the reference (pattern)
   // configuration, so they are computed once. Each cell's arrays have one length, and are
   // stored in one block per kind (cell_table.h).
   std::vector<int> cell_index;
   CellTable<GlobalDof> cell_dofs;
-  std::vector<char> cell_owned;
   CellTable<double> cell_JxW_m2;
   CellTable<Vec2> cell_grad_grain;
   // Per cell, the ratio of grain to layout area; the linear hat of each cell corner at the
@@ -174,29 +177,24 @@ class PatternMesh {
   std::vector<double> node_edge_m;
 
  private:
-  using NodeCopies = std::vector<std::vector<DofTriple>>;  // of every node, while building
   int n_nodes_ = 0;
   int n_all_cells_ = 0;
   std::vector<int> global_nodes_;  // local node -> global node, ascending
   CompactLists<DofTriple> node_copies_;
   std::vector<double> node_rest_area_m2_;  // per local node
-
-  // DoF -> the node it carries or follows (every DoF of every rank).
-  std::vector<int> dof_nodes(const NodeCopies& all_copies) const;
-  // The local nodes (those of the stored cells) and their copies and rest areas; relevant_dofs,
-  // the partitioner, owned_nodes and seam_nodes_.
-  void keep_relevant_nodes(const NodeCopies& all_copies, const std::vector<double>& rest_area_m2);
   // The local nodes with a copy other than the carrying one among this rank's DoFs.
   std::vector<int> seam_nodes_;
-  using Triangulation = dealii::parallel::shared::Triangulation<2>;
-  // Builds the triangulation; returns per cell the gradient map grad_grain = G grad_layout.
-  std::vector<Mat2> build_triangulation(Triangulation& triangulation) const;
-  // Every node's copies (edge_ends, edge_index and cell_vertices on the way).
-  NodeCopies build_nodes(const dealii::DoFHandler<2>& dof_handler);
-  // The stored cells' arrays; returns every node's rest area (node_rest_area_m2).
-  std::vector<double> build_cell_quadrature(const dealii::DoFHandler<2>& dof_handler,
-                                            const std::vector<Mat2>& to_grain_gradient,
-                                            const NodeCopies& all_copies);
+
+  // Degree 2: numbers the welded edges (edge_ends, edge_index) in the order the panel
+  // triangles meet them.
+  void number_edges(const std::vector<Triangle>& panel_triangles);
+  // The own cells' arrays (and their corners in cell_vertices); returns each of their element
+  // nodes' copy and rest area share, for exchange_node_copies.
+  std::vector<NodeCopy> build_cells(const dealii::DoFHandler<2>& dof_handler,
+                                    const std::vector<Triangle>& panel_triangles);
+  // The local nodes, their copies and rest areas from exchange_node_copies; relevant_dofs, the
+  // partitioner, owned_nodes and seam_nodes_.
+  void keep_relevant_nodes(const std::vector<NodeCopy>& node_copies);
 };
 
 }  // namespace tightfit
