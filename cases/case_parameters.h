@@ -90,8 +90,9 @@ struct OutputSettings {
   // False for a run that only wants the numbers back (no file at all).
   bool write_files = true;
   // This process among the MPI ranks of the run. Every rank holds the whole result: the first
-  // alone writes the CSV tables, the body and the .pvd collections; with more than one rank
-  // each writes its piece of the garment of every load step (a .pvtu of n_ranks pieces).
+  // alone writes the CSV tables and the .pvd collections, the last the body; with more than
+  // one rank each writes its piece of the garment of every load step (a .pvtu of n_ranks
+  // pieces).
   int rank = 0;
   int n_ranks = 1;
   bool is_first_rank() const { return rank == 0; }

@@ -92,11 +92,15 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   namespace fs = std::filesystem;
   const OutputSettings& output = scenario.parameters.output;
   // Every rank holds the whole result's scalars (the steps' per-vertex arrays are released
-  // once written, scenario_run.h). The first writes the tables, the body and the collections; the
-  // garment is written by every rank, one piece each, when there are several.
+  // once written, scenario_run.h). The first writes the tables and the collections, the last
+  // the body; the garment is written by every rank, one piece each, when there are several.
   const bool write_tables = output.write_files && output.is_first_rank();
   const bool write_garment = output.write_files && output.write_vtu;
-  const bool write_series = write_tables && output.write_vtu;  // .pvd collections, body
+  const bool write_series = write_tables && output.write_vtu;  // .pvd collections
+  // The body VTU (and its pressure map, a search tree over the whole garment) is the last
+  // rank's: the first holds the larger share of MUMPS's factors (docs/performance.md).
+  const bool write_body =
+      output.write_files && output.write_vtu && output.rank == output.n_ranks - 1;
   if (write_tables || write_garment) fs::create_directories(output_dir);
   const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
 
@@ -171,15 +175,16 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
             write_vtu_share(garment, output_dir, stem, output.rank, output.n_ranks);
         if (garment_series) garment_series->add(m.alpha, file);
       }
-      if (write_series) {
-        char name[64];
-        std::snprintf(name, sizeof name, "body_%04zu.vtu", step);
+      char body_name[64];
+      std::snprintf(body_name, sizeof body_name, "body_%04zu.vtu", step);
+      if (write_body) {
         if (output.body_pressure)
-          body_pressure_vtu(body_surface_pressure(scenario, m), m.field).write(path(name));
+          body_pressure_vtu(body_surface_pressure(scenario, m), m.field).write(path(body_name));
         else
-          write_body_vtu(path(name), scenario.body->body().display_mesh());
-        body_series->add(m.alpha, name);
+          write_body_vtu(path(body_name), scenario.body->body().display_mesh());
       }
+      // With several ranks the file may land a moment after it is listed, as the pieces do.
+      if (write_series) body_series->add(m.alpha, body_name);
     });
     print_progress(log, m, scenario.alphas.size());
     if (on_step) on_step(m);
