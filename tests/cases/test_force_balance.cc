@@ -95,7 +95,9 @@ TEST_P(ForceBalance, TubeOnHorizontalCylinderCarriesItsWeightAndNothingElse) {
         GetParam(), m.alpha, gravity_on ? "on" : "off", miss_N, b.pressing_N, b.weight_N.norm(),
         b.bound_N);
     EXPECT_LT(miss_N, b.bound_N) << "alpha " << m.alpha;
-    if (gravity_on) EXPECT_LT(miss_N, tolerances(GetParam()).tube * b.weight_N.norm());
+    if (gravity_on) {
+      EXPECT_LT(miss_N, tolerances(GetParam()).tube * b.weight_N.norm());
+    }
   }
 }
 
