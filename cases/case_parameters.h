@@ -89,7 +89,8 @@ struct OutputSettings {
   double body_edge_length_m = 0.0;
   // False for a run that only wants the numbers back (no file at all).
   bool write_files = true;
-  // This process among the MPI ranks of the run. Every rank holds the whole result: the first
+  // This process among the MPI ranks of the run. Every rank holds every step's scalars (the
+  // per-vertex arrays only while the step is written, scenario_run.h): the first
   // alone writes the CSV tables and the .pvd collections, the last the body; with more than
   // one rank each writes its piece of the garment of every load step (a .pvtu of n_ranks
   // pieces).
