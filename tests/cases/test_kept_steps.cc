@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -114,9 +116,13 @@ TEST(KeptSteps, OnlyTheLastStepKeepsItsArraysAndEveryOutputIsAsFromTheWholeField
                 1e-9 * ref.middle.mean_Pa);
     EXPECT_NEAR(std::stod(csv_regions[2 * k + 1].at("normal_force_N")), ref.ankle.normal_force_N,
                 1e-9 * ref.ankle.normal_force_N);
-    // The tube presses uniformly: its middle reads the closed form within 0.9%, as the whole
-    // tube does on this mesh (test_verification_matrix).
-    EXPECT_LT(std::abs(ref.middle.mean_Pa / m.p_theory_Pa - 1), 0.009) << "step " << k;
+    // The tube presses uniformly: its middle reads the closed form, below it as the whole tube
+    // does on this mesh (the inscribed polygon, test_verification_matrix). Measured 6.5e-3,
+    // 4.3e-3 and 3.5e-3 below at the three steps; bound 0.9%, 1.4 times the largest.
+    std::printf("step %zu: middle region %.4f Pa against the closed form %.4f Pa (%+.3e)\n", k,
+                ref.middle.mean_Pa, m.p_theory_Pa, ref.middle.mean_Pa / m.p_theory_Pa - 1);
+    EXPECT_LT(ref.middle.mean_Pa, m.p_theory_Pa) << "step " << k;
+    EXPECT_GT(ref.middle.mean_Pa / m.p_theory_Pa - 1, -0.009) << "step " << k;
   }
 
   // The tables on screen: the last step's regions and class, kept by the measurements while
