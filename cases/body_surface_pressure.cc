@@ -1,5 +1,6 @@
 #include "cases/body_surface_pressure.h"
 
+#include "cases/nearest_over_ranks.h"
 #include "cases/step_measurement.h"
 #include "contact/triangle_bvh.h"
 #include "core/mesh_geometry.h"
@@ -48,6 +49,35 @@ DisplayMesh split_once(const RigidBody& body, const DisplayMesh& mesh) {
   return fine;
 }
 
+// Whether body point b lies under the garment whose nearest point to it is q, in triangle t:
+// q within `max_distance_m` and b - q along the triangle's normal (within 45 degrees), as under
+// the cloth, not across its edge; if so `pressure_Pa` is the garment's there, interpolated
+// linearly from t's corners (vertices out of contact count as zero).
+bool read_garment(const Vec3& b, const Vec3& q, const Triangle& t, const std::vector<Vec3>& x,
+                  const PressureField& field, double max_distance_m, double& pressure_Pa) {
+  // cos 45 degrees: b - q along the garment's normal rather than across its boundary.
+  const double min_cosine = std::sqrt(0.5);
+  const Vec3 &x0 = x[t[0]], &x1 = x[t[1]], &x2 = x[t[2]];
+  const Vec3 offset = b - q;
+  const Vec3 normal = (x1 - x0).cross(x2 - x0);
+  const double distance = offset.norm();
+  if (distance > max_distance_m || !(normal.norm() > 0)) return false;
+  if (distance > 1e-9 * max_distance_m &&
+      std::abs(offset.dot(normal)) < min_cosine * distance * normal.norm())
+    return false;
+  // Barycentric coordinates of q in t (areas of the opposite sub-triangles).
+  const Vec3 unit_normal = normal.normalized();
+  const double twice_area = normal.norm();
+  const double l1 = (x2 - x0).cross(q - x0).dot(-unit_normal) / twice_area;
+  const double l2 = (x1 - x0).cross(q - x0).dot(unit_normal) / twice_area;
+  const double l0 = 1.0 - l1 - l2;
+  const auto p = [&](int corner) {
+    return field.contact[t[corner]] ? field.pressure_Pa[t[corner]] : 0.0;
+  };
+  pressure_Pa = l0 * p(0) + l1 * p(1) + l2 * p(2);
+  return true;
+}
+
 }  // namespace
 
 DisplayMesh refined_body_surface(const RigidBody& body, const DisplayMesh& mesh, double max_edge_m,
@@ -61,7 +91,8 @@ DisplayMesh refined_body_surface(const RigidBody& body, const DisplayMesh& mesh,
 BodySurfacePressure body_surface_pressure(DisplayMesh surface,
                                           const std::vector<Triangle>& garment_triangles,
                                           const std::vector<Vec3>& garment_positions_m,
-                                          const PressureField& field, double max_distance_m) {
+                                          const PressureField& field, double max_distance_m,
+                                          const RankShare& share) {
   BodySurfacePressure result;
   result.surface = std::move(surface);
   const std::vector<Vec3>& points = result.surface.vertices_m;
@@ -70,40 +101,40 @@ BodySurfacePressure body_surface_pressure(DisplayMesh surface,
   result.under_garment.assign(n, 0);
   result.vertex_area_m2 =
       vertex_areas(result.surface.triangles, points, n, VertexAreaDefinition::barycentric);
-  TriangleBvh garment;
-  garment.build(garment_positions_m, garment_triangles);
-  // cos 45 degrees: b - q along the garment's normal rather than across its boundary.
-  const double min_cosine = std::sqrt(0.5);
+  // This rank's nearest point in its block of the garment (the whole garment on one rank).
+  const auto [first, end] = share.block(static_cast<int>(garment_triangles.size()));
+  std::vector<NearestReading> nearest(n);
+  if (first < end) {
+    std::vector<Triangle> block;
+    if (end - first < static_cast<int>(garment_triangles.size()))
+      block.assign(garment_triangles.begin() + first, garment_triangles.begin() + end);
+    TriangleBvh garment;
+    garment.build(garment_positions_m, block.empty() ? garment_triangles : block);
+    for (int b = 0; b < n; ++b) {
+      const TriangleBvh::Hit hit = garment.closest(points[b]);
+      if (hit.triangle < 0) continue;
+      const int t = first + hit.triangle;
+      NearestReading& r = nearest[b];
+      r.query_m = {points[b].x(), points[b].y(), points[b].z()};
+      r.point_m = {hit.point_m.x(), hit.point_m.y(), hit.point_m.z()};
+      r.triangle = t;
+      r.flag = read_garment(points[b], hit.point_m, garment_triangles[t], garment_positions_m,
+                            field, max_distance_m, r.value);
+    }
+  }
+  // The tree is gone; the nearest of the ranks' points is every rank's.
+  keep_nearest_over_ranks(nearest, share);
   for (int b = 0; b < n; ++b) {
-    const TriangleBvh::Hit hit = garment.closest(points[b]);
-    if (hit.triangle < 0) continue;
-    const Triangle& t = garment_triangles[hit.triangle];
-    const Vec3 &x0 = garment_positions_m[t[0]], &x1 = garment_positions_m[t[1]],
-               &x2 = garment_positions_m[t[2]];
-    const Vec3 offset = points[b] - hit.point_m;
-    const Vec3 normal = (x1 - x0).cross(x2 - x0);
-    const double distance = offset.norm();
-    if (distance > max_distance_m || !(normal.norm() > 0)) continue;
-    if (distance > 1e-9 * max_distance_m &&
-        std::abs(offset.dot(normal)) < min_cosine * distance * normal.norm())
-      continue;
-    // Barycentric coordinates of the hit in its triangle (areas of the opposite sub-triangles).
-    const Vec3 unit_normal = normal.normalized();
-    const double twice_area = normal.norm();
-    const double l1 = (x2 - x0).cross(hit.point_m - x0).dot(-unit_normal) / twice_area;
-    const double l2 = (x1 - x0).cross(hit.point_m - x0).dot(unit_normal) / twice_area;
-    const double l0 = 1.0 - l1 - l2;
-    const auto p = [&](int corner) {
-      return field.contact[t[corner]] ? field.pressure_Pa[t[corner]] : 0.0;
-    };
+    if (!nearest[b].flag) continue;
     result.under_garment[b] = 1;
-    result.pressure_Pa[b] = l0 * p(0) + l1 * p(1) + l2 * p(2);
+    result.pressure_Pa[b] = nearest[b].value;
     result.normal_force_N += result.pressure_Pa[b] * result.vertex_area_m2[b];
   }
   return result;
 }
 
-BodySurfacePressure body_surface_pressure(const Scenario& scenario, const StepMeasurement& m) {
+BodySurfacePressure body_surface_pressure(const Scenario& scenario, const StepMeasurement& m,
+                                          const RankShare& share) {
   const double garment_edge_m = scenario.mean_edge_length_m;
   const double edge_m = scenario.parameters.output.body_edge_length_m > 0
                             ? scenario.parameters.output.body_edge_length_m
@@ -111,7 +142,7 @@ BodySurfacePressure body_surface_pressure(const Scenario& scenario, const StepMe
   const RigidBody& body = scenario.body->body();
   return body_surface_pressure(refined_body_surface(body, body.display_mesh(), edge_m),
                                scenario.mesh.triangles, m.state.positions_m, m.field,
-                               garment_edge_m);
+                               garment_edge_m, share);
 }
 
 SurfaceVtu body_pressure_vtu(const BodySurfacePressure& body, const PressureField& field) {

@@ -8,8 +8,17 @@
 // corners of the garment triangle it lies in (vertices out of contact count as zero), when the
 // garment lies on it: q is within `max_distance_m` and b - q runs along the garment's normal
 // (within 45 degrees), as under the cloth, not across its edge. Elsewhere the pressure is zero.
+//
+// Under MPI the ranks may make the map together (RankShare, cases/nearest_over_ranks.h): each
+// searches its block of the garment's triangles, and every rank gets the nearest of the blocks'
+// points, decided by the exact comparison one search of the whole garment decides by; so that no
+// rank holds a search tree of the whole garment (docs/performance.md, "## MPI"). The map is one
+// search's but where two triangles hold exactly the same nearest point (their common edge or
+// corner): one search keeps whichever its tree meets last, the ranks the lower index, and the
+// two interpolate the corners' pressures with different rounding (1e-16 relative, measured).
 #pragma once
 
+#include "cases/nearest_over_ranks.h"
 #include "contact/pressure_extractor.h"
 #include "contact/rigid_body.h"
 #include "io/vtu_writer.h"
@@ -34,13 +43,16 @@ struct BodySurfacePressure {
 BodySurfacePressure body_surface_pressure(DisplayMesh surface,
                                           const std::vector<Triangle>& garment_triangles,
                                           const std::vector<Vec3>& garment_positions_m,
-                                          const PressureField& field, double max_distance_m);
+                                          const PressureField& field, double max_distance_m,
+                                          const RankShare& share = {});
 
 struct Scenario;
 struct StepMeasurement;
 // The pressure of load step `m` on the scenario's body, refined to Output/Body edge length
-// (default half the garment's mean edge), the garment within its mean edge length.
-BodySurfacePressure body_surface_pressure(const Scenario& scenario, const StepMeasurement& m);
+// (default half the garment's mean edge), the garment within its mean edge length. With
+// several ranks in `share`, collective: every one of them calls it.
+BodySurfacePressure body_surface_pressure(const Scenario& scenario, const StepMeasurement& m,
+                                          const RankShare& share = {});
 
 // The body VTU with point data pressure_Pa, pressure_mmHg, under_garment (0/1) and
 // vertex_area_m2, and field data normal_force_N (on the body) and garment_normal_force_N

@@ -97,10 +97,12 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   const bool write_tables = output.write_files && output.is_first_rank();
   const bool write_garment = output.write_files && output.write_vtu;
   const bool write_series = write_tables && output.write_vtu;  // .pvd collections
-  // The body VTU (and its pressure map, a search tree over the whole garment) is the last
-  // rank's: the first holds the larger share of MUMPS's factors (docs/performance.md).
+  // The body VTU is the last rank's: the first holds the larger share of MUMPS's factors
+  // (docs/performance.md). Its pressure map is every rank's work, each searching its block of
+  // the garment (cases/body_surface_pressure.h).
   const bool write_body =
       output.write_files && output.write_vtu && output.rank == output.n_ranks - 1;
+  const bool map_body = output.write_files && output.write_vtu && output.body_pressure;
   if (write_tables || write_garment) fs::create_directories(output_dir);
   const auto path = [&](const std::string& name) { return (fs::path(output_dir) / name).string(); };
 
@@ -177,11 +179,12 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       }
       char body_name[64];
       std::snprintf(body_name, sizeof body_name, "body_%04zu.vtu", step);
-      if (write_body) {
-        if (output.body_pressure)
-          body_pressure_vtu(body_surface_pressure(scenario, m), m.field).write(path(body_name));
-        else
-          write_body_vtu(path(body_name), scenario.body->body().display_mesh());
+      if (map_body) {
+        const BodySurfacePressure body =
+            body_surface_pressure(scenario, m, RankShare{output.rank, output.n_ranks});
+        if (write_body) body_pressure_vtu(body, m.field).write(path(body_name));
+      } else if (write_body) {
+        write_body_vtu(path(body_name), scenario.body->body().display_mesh());
       }
       // With several ranks the file may land a moment after it is listed, as the pieces do.
       if (write_series) body_series->add(m.alpha, body_name);

@@ -78,4 +78,9 @@ TriangleBvh::Hit TriangleBvh::closest_among(const Vec3& x,
   return hit;
 }
 
+int compare_distances(const Vec3& x, const Vec3& a, const Vec3& b) {
+  const auto point = [](const Vec3& v) { return Kernel::Point_3(v.x(), v.y(), v.z()); };
+  return static_cast<int>(Kernel().compare_distance_3_object()(point(x), point(a), point(b)));
+}
+
 }  // namespace tightfit

@@ -36,4 +36,9 @@ class TriangleBvh {
   std::unique_ptr<Tree> tree_;
 };
 
+// -1, 0 or 1 as `a` lies nearer to x than `b`, as near, or farther, decided exactly (CGAL's
+// predicate, by which the tree's own search keeps the nearer of two points): nearest points
+// found by searches over parts of a mesh then compare as they would in one search.
+int compare_distances(const Vec3& x_m, const Vec3& a_m, const Vec3& b_m);
+
 }  // namespace tightfit
