@@ -74,6 +74,25 @@ TEST(BodySurfacePressure, UnderTheTubeTheBodyReadsTheGarmentsPressureAndForce) {
   }
 }
 
+// The ranks' blocks of the garment's triangles (cases/nearest_over_ranks.h): each triangle in
+// one block, in order, the blocks' sizes differing by one at most, empty ones where there are
+// more ranks than triangles.
+TEST(BodySurfacePressure, RanksBlocksCoverEveryTriangleOnce) {
+  for (const int n_triangles : {0, 1, 8, 880, 191912})
+    for (const int n_ranks : {1, 2, 3, 7, 10}) {
+      int next = 0, smallest = n_triangles, largest = 0;
+      for (int rank = 0; rank < n_ranks; ++rank) {
+        const auto [first, end] = RankShare{rank, n_ranks}.block(n_triangles);
+        EXPECT_EQ(first, next) << n_triangles << " triangles, rank " << rank << " of " << n_ranks;
+        next = end;
+        smallest = std::min(smallest, end - first);
+        largest = std::max(largest, end - first);
+      }
+      EXPECT_EQ(next, n_triangles);
+      EXPECT_LE(largest - smallest, 1);
+    }
+}
+
 TEST(BodySurfacePressure, NoGarmentNoPressure) {
   GarmentTRun& run = garment_t_run();
   const StepMeasurement& m = run.result.steps.back();
