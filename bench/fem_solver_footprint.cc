@@ -8,8 +8,10 @@
 //   along; 0.073 gives about 97000 vertices); SOLVER: a `Finite elements/Linear solver` name;
 //   ALPHA: the cylinder's radius over the tube's (default 1.1); MEMORY: a `Finite
 //   elements/Iterative solver memory` name (default fast).
+// The garment and its mesh are built on rank 0 only (the FE backend sends each rank its part).
 // Prints, per rank, the resident set with MPI and PETSc started (the libraries' floor, which no
-// distribution lowers), after the garment's mesh is built, after the backend's setup, the peak
+// distribution lowers), after the garment's mesh is built (rank 0's), after the backend's
+// setup, the peak
 // up to then (the setup's, with the deal.II triangulation it frees) and the peak over the run
 // (MB), the resident set after the step (the solver's state it keeps and the step's output),
 // and the step's Newton and Krylov iterations, wall and CPU time.
@@ -79,7 +81,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   testing::TubeCase tube("st venant kirchhoff", EndCondition::free_ends,
-                         MeshSpacing{scale * 0.008, scale * 0.022});
+                         MeshSpacing{scale * 0.008, scale * 0.022}, testing::MeshOnFirstRank{});
   const double mesh_MB = resident_MB();
   FemBackend backend(tube.problem, parameters);
   int rank = 0, n_ranks = 1;
@@ -92,8 +94,10 @@ int main(int argc, char** argv) {
   const std::clock_t cpu_start = std::clock();
   const StepReport report = backend.solve({0, alpha, false});
   const double cpu_s = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  const double step_MB = resident_MB();  // the solver's state kept, and the step's output
-  const double mean_Pa = tube.pressure(backend.state()).mean_Pa;
+  const double step_MB = resident_MB();        // the solver's state kept, and the step's output
+  const SurfaceState state = backend.state();  // collective
+  double mean_Pa = rank == 0 ? tube.pressure(state).mean_Pa : 0.0;
+  MPI_Bcast(&mean_Pa, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   for (int r = 0; r < n_ranks; ++r) {
     MPI_Barrier(MPI_COMM_WORLD);
     if (r == rank)
@@ -102,7 +106,7 @@ int main(int argc, char** argv) {
           "%.0f MB with the mesh, %.0f MB after setup, peak %.0f MB (%.0f MB above the "
           "first); %.1f s CPU, p_mean %.10f Pa; setup peak %.0f MB; %.0f MB after the step; "
           "memory %s\n",
-          rank, n_ranks, tube.mesh.n_vertices, argv[2], floor_MB, mesh_MB, setup_MB,
+          rank, n_ranks, tube.n_vertices(), argv[2], floor_MB, mesh_MB, setup_MB,
           peak_resident_MB(), peak_resident_MB() - floor_MB, cpu_s, mean_Pa, setup_peak_MB, step_MB,
           memory.c_str());
     std::fflush(stdout);

@@ -30,6 +30,9 @@ struct VertexConstraint {
 
 // What is simulated: shared by both backends, owned by the caller, alive while they run.
 struct Problem {
+  // The mass-spring backend reads it on every rank. The FE backend reads it (and `constraints`)
+  // on the first rank of MPI_COMM_WORLD only, and sends each rank its part: with linear
+  // triangles the other ranks may leave it null (quadratic ones need it on every rank).
   const SimulationMesh* mesh = nullptr;
   const MaterialLaw* law = nullptr;
   const FabricParameters* fabric = nullptr;

@@ -101,13 +101,15 @@ SimulationMesh weld(const Garment& garment) {
   return mesh;
 }
 
+double rest_triangle_area(const std::array<Vec2, 3>& rest_m) {
+  const Vec2 e1 = rest_m[1] - rest_m[0], e2 = rest_m[2] - rest_m[0];
+  return 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+}
+
 std::vector<double> rest_triangle_areas(const SimulationMesh& mesh) {
   std::vector<double> areas;
   areas.reserve(mesh.rest_triangles.size());
-  for (const auto& r : mesh.rest_triangles) {
-    const Vec2 e1 = r[1] - r[0], e2 = r[2] - r[0];
-    areas.push_back(0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x()));
-  }
+  for (const auto& r : mesh.rest_triangles) areas.push_back(rest_triangle_area(r));
   return areas;
 }
 

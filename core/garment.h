@@ -73,7 +73,8 @@ struct SimulationMesh {
 // or joins edges of different vertex counts.
 SimulationMesh weld(const Garment& garment);
 
-// Rest area of every triangle, m^2, and their sum.
+// Rest area of one triangle from its rest corners, of every triangle, m^2, and their sum.
+double rest_triangle_area(const std::array<Vec2, 3>& rest_m);
 std::vector<double> rest_triangle_areas(const SimulationMesh& mesh);
 double rest_area(const SimulationMesh& mesh);
 

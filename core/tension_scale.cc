@@ -5,8 +5,12 @@
 namespace tightfit {
 
 double tension_scale_N(const SimulationMesh& mesh, double stiffness_scale_N_per_m) {
-  const double edge_m = mean_rest_edge_length_m(mesh);
-  return stiffness_scale_N_per_m * edge_m * edge_m / std::sqrt(rest_area(mesh));
+  return tension_scale_N(mean_rest_edge_length_m(mesh), rest_area(mesh), stiffness_scale_N_per_m);
+}
+
+double tension_scale_N(double mean_rest_edge_m, double rest_area_m2,
+                       double stiffness_scale_N_per_m) {
+  return stiffness_scale_N_per_m * mean_rest_edge_m * mean_rest_edge_m / std::sqrt(rest_area_m2);
 }
 
 }  // namespace tightfit

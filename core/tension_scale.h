@@ -14,5 +14,8 @@ namespace tightfit {
 // edge, lets the smooth error grow like L / h as the mesh is refined (docs/model.md, "Reaching
 // equilibrium").
 double tension_scale_N(const SimulationMesh& mesh, double stiffness_scale_N_per_m);
+// The same from the mesh's mean rest edge h and rest area L^2.
+double tension_scale_N(double mean_rest_edge_m, double rest_area_m2,
+                       double stiffness_scale_N_per_m);
 
 }  // namespace tightfit

@@ -6,46 +6,59 @@
 
 namespace tightfit {
 
-std::vector<double> node_edge_lengths_m(const SimulationMesh& mesh,
-                                        const std::vector<std::array<int, 2>>& edge_ends,
-                                        int element_degree) {
-  const int n = mesh.n_vertices;
-  std::vector<double> sum(n, 0.0);
-  std::vector<int> count(n, 0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& v = mesh.triangles[t];
-    const auto& r = mesh.rest_triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const double length = (r[(k + 1) % 3] - r[k]).norm();  // edge k -> k+1
-      for (int end : {v[k], v[(k + 1) % 3]}) {
-        sum[end] += length;
-        ++count[end];
-      }
+void add_node_edge_lengths(const Triangle& v, const std::array<Vec2, 3>& rest_m,
+                           std::vector<double>& length_sum_m, std::vector<double>& count) {
+  for (int k = 0; k < 3; ++k) {
+    const double length = (rest_m[(k + 1) % 3] - rest_m[k]).norm();  // edge k -> k+1
+    for (int end : {v[k], v[(k + 1) % 3]}) {
+      length_sum_m[end] += length;
+      count[end] += 1.0;
     }
   }
-  std::vector<double> h(n, 0.0);
-  for (int w = 0; w < n; ++w) h[w] = count[w] > 0 ? sum[w] / count[w] : 0.0;
+}
+
+std::vector<double> node_edge_lengths_m(const std::vector<double>& length_sum_m,
+                                        const std::vector<double>& count,
+                                        const std::vector<std::array<int, 2>>& edge_ends,
+                                        int element_degree) {
+  std::vector<double> h(length_sum_m.size(), 0.0);
+  for (std::size_t w = 0; w < h.size(); ++w)
+    h[w] = count[w] > 0.0 ? length_sum_m[w] / count[w] : 0.0;
   if (element_degree == 2)
     for (const auto& ends : edge_ends) h.push_back(0.5 * (h[ends[0]] + h[ends[1]]));
   return h;
 }
 
+std::vector<double> node_edge_lengths_m(const SimulationMesh& mesh,
+                                        const std::vector<std::array<int, 2>>& edge_ends,
+                                        int element_degree) {
+  std::vector<double> sum(mesh.n_vertices, 0.0), count(mesh.n_vertices, 0.0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    add_node_edge_lengths(mesh.triangles[t], mesh.rest_triangles[t], sum, count);
+  return node_edge_lengths_m(sum, count, edge_ends, element_degree);
+}
+
+void add_nodal_rest_areas(const Triangle& v, double area_m2, int n_vertices,
+                          const std::map<std::array<int, 2>, int>& edge_index, int element_degree,
+                          std::vector<double>& area_m2_of_node) {
+  const bool quadratic = element_degree == 2;
+  for (int k = 0; k < 3; ++k) {
+    area_m2_of_node[v[k]] += area_m2 / (quadratic ? 12.0 : 3.0);
+    if (!quadratic) continue;
+    std::array<int, 2> ends{v[k], v[(k + 1) % 3]};
+    std::sort(ends.begin(), ends.end());
+    area_m2_of_node[n_vertices + edge_index.at(ends)] += area_m2 / 4.0;
+  }
+}
+
 std::vector<double> nodal_rest_areas_m2(const SimulationMesh& mesh,
                                         const std::map<std::array<int, 2>, int>& edge_index,
                                         int element_degree) {
-  const bool quadratic = element_degree == 2;
   const std::vector<double> areas = rest_triangle_areas(mesh);
   std::vector<double> area(mesh.n_vertices + edge_index.size(), 0.0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& v = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      area[v[k]] += areas[t] / (quadratic ? 12.0 : 3.0);
-      if (!quadratic) continue;
-      std::array<int, 2> ends{v[k], v[(k + 1) % 3]};
-      std::sort(ends.begin(), ends.end());
-      area[mesh.n_vertices + edge_index.at(ends)] += areas[t] / 4.0;
-    }
-  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    add_nodal_rest_areas(mesh.triangles[t], areas[t], mesh.n_vertices, edge_index, element_degree,
+                         area);
   return area;
 }
 

@@ -59,6 +59,15 @@ struct ContactNodes {
 std::vector<double> node_edge_lengths_m(const SimulationMesh& mesh,
                                         const std::vector<std::array<int, 2>>& edge_ends,
                                         int element_degree);
+// The same in two halves, for triangles spread over ranks: each triangle (welded corners `v`,
+// rest corners `rest_m`) adds its edges to its vertices' sums of lengths and counts; from the
+// sums over every triangle, each node's h_k.
+void add_node_edge_lengths(const Triangle& v, const std::array<Vec2, 3>& rest_m,
+                           std::vector<double>& length_sum_m, std::vector<double>& count);
+std::vector<double> node_edge_lengths_m(const std::vector<double>& length_sum_m,
+                                        const std::vector<double>& count,
+                                        const std::vector<std::array<int, 2>>& edge_ends,
+                                        int element_degree);
 
 // The positive rest area w_k of each node, m^2. Linear triangles (degree 1): the barycentric
 // third of each triangle (their lumped mass, the mass-spring backend's vertex area). Quadratic
@@ -70,6 +79,11 @@ std::vector<double> node_edge_lengths_m(const SimulationMesh& mesh,
 std::vector<double> nodal_rest_areas_m2(const SimulationMesh& mesh,
                                         const std::map<std::array<int, 2>, int>& edge_index,
                                         int element_degree);
+// One triangle's shares (welded corners `v`, rest area `area_m2`) added to `area_m2_of_node`
+// (of every node: n_vertices, then the midpoints).
+void add_nodal_rest_areas(const Triangle& v, double area_m2, int n_vertices,
+                          const std::map<std::array<int, 2>, int>& edge_index, int element_degree,
+                          std::vector<double>& area_m2_of_node);
 
 // The penalty k_k w_k of each node, with k_k = beta Y / h_k^2 (Pa/m; beta_Y_N_per_m = beta Y).
 // It only sets how fast the augmented-Lagrangian updates converge, never the converged state.

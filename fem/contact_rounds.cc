@@ -26,12 +26,9 @@ std::string format_residuals(const std::vector<double>& values) {
 ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
                              const FemParameters& parameters)
     : pattern_(pattern), problem_(problem), parameters_(parameters) {
-  // Of every node, then kept for this rank's.
-  const std::vector<double> area_m2 =
-      nodal_rest_areas_m2(pattern.mesh, pattern.edge_index, parameters.element_degree);
   std::vector<double> owned_area_m2, owned_edge_m;
   for (const int node : pattern.owned_nodes) {
-    owned_area_m2.push_back(area_m2[pattern.global_node(node)]);
+    owned_area_m2.push_back(pattern.node_contact_area_m2[node]);
     owned_edge_m.push_back(pattern.node_edge_m[node]);
   }
   nodes_.penalty_N_per_m = nodal_penalties_N_per_m(

@@ -9,6 +9,7 @@
 #include "fem/fem_constraints.h"
 #include "fem/fem_state.h"
 #include "fem/membrane_assembly.h"
+#include "fem/mesh_part.h"
 #include "fem/newton_solver.h"
 #include "fem/pattern_mesh.h"
 #include "fem/petsc_linear_solver.h"
@@ -44,7 +45,8 @@ void start_mpi_and_petsc() {
 }
 
 const Problem& checked(const Problem& problem, const FemParameters& parameters) {
-  if (!problem.mesh || !problem.law || !problem.body)
+  // The mesh is checked on rank 0 by the pattern's setup (it may be null on the others).
+  if (!problem.law || !problem.body)
     throw std::invalid_argument("fem backend: the problem needs a mesh, a law and a body");
   if (problem.friction_coefficient > 0.0) {
     // Friction's tangent is unsymmetric (contact/coulomb_friction.h): CG cannot take it.
@@ -94,24 +96,20 @@ class FemBackend::Implementation {
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
         assembly_(pattern_, problem_, uses_cg(parameters.linear_solver), comm_),
         newton_(pattern_, parameters, problem.law->stiffness_scale(),
-                tension_scale_N(*problem.mesh, problem.law->stiffness_scale()), problem.body,
-                comm_),
+                tension_scale_N(pattern_.mean_rest_edge_m, pattern_.rest_area_m2,
+                                problem.law->stiffness_scale()),
+                problem.body, comm_),
         contact_(pattern_, problem_, parameters) {
     if (parameters.max_contact_set_predictions > 0)
       newton_.set_contact_set_predictor([this](const DofVector& x, const DofVector* increment) {
         return contact_.predict_contact_set(x, increment);
       });
     // Start flat in the layout plane until the caller places the garment.
-    const SimulationMesh& mesh = *problem.mesh;
-    std::vector<Vec3> flat(mesh.n_vertices);
-    for (int u = 0; u < mesh.n_unwelded_vertices(); ++u)
-      flat[mesh.welded_index[u]] =
-          Vec3(mesh.layout_positions_m[u].x(), mesh.layout_positions_m[u].y(), 0);
-    set_positions(flat);
+    set_positions(layout_start_on_every_rank(problem.mesh, pattern_.n_vertices(), comm_));
   }
 
   void set_positions(const std::vector<Vec3>& positions_m) {
-    if (static_cast<int>(positions_m.size()) != problem_.mesh->n_vertices)
+    if (static_cast<int>(positions_m.size()) != pattern_.n_vertices())
       throw std::invalid_argument("fem backend: set_positions needs one position per vertex");
     x_ = pattern_.dof_positions(positions_m);
     contact_.start_from(x_);

@@ -30,7 +30,9 @@ namespace tightfit {
 class FemBackend final : public Backend {
  public:
   // Builds the mesh, the degrees of freedom and the seam constraints, distributed over
-  // MPI_COMM_WORLD (MPI and PETSc are started here when the program has not done so).
+  // MPI_COMM_WORLD (MPI and PETSc are started here when the program has not done so). The
+  // problem's mesh and constraints are read on rank 0 (Problem::mesh), which sends each rank its
+  // part of the mesh (fem/mesh_part.h).
   FemBackend(const Problem& problem, const FemParameters& parameters);
   ~FemBackend() override;
 

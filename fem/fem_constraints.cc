@@ -66,9 +66,9 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
       constrain_directions(pattern.carrier(node), pattern.node_constrained.directions(node),
                            constraints);
   // The pins are chosen among every vertex alike on every rank: from the whole garment's
-  // positions and constraints (held only while they are chosen).
+  // positions and rank 0's constraints (held only while they are chosen).
   const RigidMotionPin pin = rigid_motion_pin(
-      *problem.body, positions_m, ConstrainedDirections(problem.constraints, pattern.n_vertices()),
+      *problem.body, positions_m, ConstrainedDirections(pattern.constraints, pattern.n_vertices()),
       problem.friction_coefficient > 0.0);
   for (const RigidMotionPin::Pin& p : pin.pins) {
     const int node = pattern.find_node(p.vertex);

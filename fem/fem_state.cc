@@ -14,15 +14,16 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
                            const RigidBody& body, const DofVector& x,
                            const std::vector<double>& multiplier_N,
                            const std::vector<Vec3>& friction_force_N, FemSurfaceOutput& out) {
-  const SimulationMesh& mesh = pattern.mesh;
-  const int n = mesh.n_vertices;
+  const int n = pattern.n_vertices();
   SurfaceState& state = out.state;
   state.internal_force_N = assembly.internal_force_N(x);
   state.contact_force_N.assign(n, Vec3::Zero());
   state.in_contact.assign(n, 0);
   state.gap_m.assign(n, 0.0);
-  const std::vector<double> area =
-      vertex_areas(mesh.triangles, state.positions_m, n, VertexAreaDefinition::barycentric);
+  // Each vertex's barycentric area: each rank its own cells' thirds, summed over the ranks.
+  std::vector<double> area =
+      vertex_areas(pattern.cell_corners, state.positions_m, n, VertexAreaDefinition::barycentric);
+  MPI_Allreduce(MPI_IN_PLACE, area.data(), n, MPI_DOUBLE, MPI_SUM, pattern.comm);
   out.contact_traction_Pa.assign(n, 0.0);
   for (int w = 0; w < n; ++w) {
     const SurfacePoint s = body.query(state.positions_m[w]);
@@ -57,7 +58,7 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
 void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
                                   const DofVector& x, const std::vector<double>& multiplier_N,
                                   const std::vector<Vec3>& gravity_load_N, FemSurfaceOutput& out) {
-  const SimulationMesh& mesh = pattern.mesh;
+  const SimulationMesh& mesh = *pattern.whole_mesh;  // degree 2: on every rank
   const int n = mesh.n_vertices;
   SurfaceQuadrature quadrature;
   quadrature.shape_values = pattern.hat_values;

@@ -2,7 +2,6 @@
 
 #include "fem/contact_nodes.h"
 #include "fem/freed_memory.h"
-#include "fem/panel_triangles.h"
 #include "fem/pattern_partition.h"
 
 #include <deal.II/base/mpi.h>
@@ -35,8 +34,7 @@ unsigned int gauss_points_1d(int element_degree) {
 }  // namespace
 
 PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicator)
-    : mesh(*problem.mesh),
-      element_degree(degree),
+    : element_degree(degree),
       comm(communicator),
       fe(dealii::FE_SimplexP<2>(degree), 3),
       mapping(dealii::FE_SimplexP<2>(1)),
@@ -45,21 +43,32 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
     local_component.push_back(fe.system_to_component_index(i).first);
     local_node.push_back(fe.system_to_component_index(i).second);
   }
-  const std::vector<Triangle> panel_triangles = unwelded_triangles(mesh);
-  n_all_cells_ = static_cast<int>(panel_triangles.size());
-  if (element_degree == 2) number_edges(panel_triangles);
-  n_nodes_ = mesh.n_vertices + static_cast<int>(edge_ends.size());
+  const SimulationMeshPart part = scatter_mesh_part(problem, comm);
+  if (element_degree == 2) {
+    // The traction recovery and the edges' numbering read the whole surface.
+    if (dealii::Utilities::MPI::min(problem.mesh ? 1 : 0, comm) == 0)
+      throw std::invalid_argument(
+          "fem backend: Finite elements/Element degree = 2 needs the garment mesh on every rank "
+          "(only linear triangles, degree 1, run with it on rank 0 alone)");
+    whole_mesh = problem.mesh;
+    number_edges(whole_mesh->triangles);
+  }
+  n_vertices_ = part.n_vertices;
+  n_all_cells_ = part.n_triangles;
+  n_nodes_ = n_vertices_ + static_cast<int>(edge_ends.size());
+  mean_edge_m = part.mean_triangle_edge_m;
+  mean_rest_edge_m = part.mean_rest_edge_m;
+  rest_area_m2 = part.rest_area_m2;
+  constraints = part.constraints;
   {
     // The triangulation (this rank's cells and their ghosts) and the DoF handler live only
     // while the arrays are built.
     dealii::parallel::fullydistributed::Triangulation<2> triangulation(comm);
-    triangulation.create_triangulation(
-        own_cells_description(mesh, panel_triangles, partition_triangles(mesh, comm), comm));
+    triangulation.create_triangulation(own_cells_description(part, comm));
     dealii::DoFHandler<2> dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
-    keep_relevant_nodes(
-        exchange_node_copies(build_cells(dof_handler, panel_triangles), n_nodes_, comm));
+    keep_relevant_nodes(exchange_node_copies(build_cells(dof_handler, part), n_nodes_, comm));
   }
   if (element_degree == 2) {
     // Each cell's corners from the rank that owns it (the others add zeros).
@@ -75,22 +84,38 @@ PatternMesh::PatternMesh(const Problem& problem, int degree, MPI_Comm communicat
   // On every rank alike: the coordinates' vector and the matrix's block size are collective.
   dofs_in_node_blocks = dealii::Utilities::MPI::min(dofs_in_node_blocks ? 1 : 0, comm) == 1;
   {
-    ConstrainedDirections every_node(problem.constraints, mesh.n_vertices);
+    ConstrainedDirections every_node(constraints, n_vertices_);
     // An edge midpoint is constrained along what both its ends are.
     for (const auto& ends : edge_ends) every_node.add_shared(ends[0], ends[1]);
     node_constrained = every_node.copies(global_nodes_);
   }
-
-  double edge_sum = 0.0;
-  for (const auto& r : mesh.rest_triangles)
-    edge_sum += (r[1] - r[0]).norm() + (r[2] - r[1]).norm() + (r[0] - r[2]).norm();
-  mean_edge_m = edge_sum / (3.0 * mesh.rest_triangles.size());
-  {
-    const std::vector<double> every_node = node_edge_lengths_m(mesh, edge_ends, element_degree);
-    node_edge_m.reserve(n_local_nodes());
-    for (const int global : global_nodes_) node_edge_m.push_back(every_node[global]);
-  }
+  sum_node_lengths_and_areas(part);
   release_freed_memory();
+}
+
+void PatternMesh::sum_node_lengths_and_areas(const SimulationMeshPart& part) {
+  // Of every node (8 bytes a node each, while they are summed), from this rank's own cells.
+  std::vector<double> length_sum_m(n_vertices_, 0.0), count(n_vertices_, 0.0);
+  std::vector<double> area_m2(n_nodes_, 0.0);
+  for (const int t : cell_index) {
+    const MeshPartTriangle& triangle = part.triangle(t);
+    add_node_edge_lengths(triangle.welded, triangle.rest_m, length_sum_m, count);
+    add_nodal_rest_areas(triangle.welded, rest_triangle_area(triangle.rest_m), n_vertices_,
+                         edge_index, element_degree, area_m2);
+  }
+  for (std::vector<double>* sums : {&length_sum_m, &count, &area_m2})
+    MPI_Allreduce(MPI_IN_PLACE, sums->data(), static_cast<int>(sums->size()), MPI_DOUBLE, MPI_SUM,
+                  comm);
+  const std::vector<double> every_node =
+      node_edge_lengths_m(length_sum_m, count, edge_ends, element_degree);
+  node_edge_m.clear();
+  node_contact_area_m2.clear();
+  node_edge_m.reserve(n_local_nodes());
+  node_contact_area_m2.reserve(n_local_nodes());
+  for (const int global : global_nodes_) {
+    node_edge_m.push_back(every_node[global]);
+    node_contact_area_m2.push_back(area_m2[global]);
+  }
 }
 
 int PatternMesh::find_node(int global) const {
@@ -99,12 +124,12 @@ int PatternMesh::find_node(int global) const {
                                                     : -1;
 }
 
-void PatternMesh::number_edges(const std::vector<Triangle>& panel_triangles) {
-  // FE_SimplexP(2)'s midpoints follow its corners' edges (0,1), (1,2), (2,0), as here.
-  for (const Triangle& corners : panel_triangles)
+void PatternMesh::number_edges(const std::vector<Triangle>& welded_triangles) {
+  // FE_SimplexP(2)'s midpoints follow its corners' edges (0,1), (1,2), (2,0), as here (a
+  // triangle's welded corners are its panel corners' welded vertices, in the same order).
+  for (const Triangle& corners : welded_triangles)
     for (int k = 0; k < 3; ++k) {
-      std::array<int, 2> ends{mesh.welded_index[corners[k]],
-                              mesh.welded_index[corners[(k + 1) % 3]]};
+      std::array<int, 2> ends{corners[k], corners[(k + 1) % 3]};
       std::sort(ends.begin(), ends.end());
       if (edge_index.emplace(ends, static_cast<int>(edge_ends.size())).second)
         edge_ends.push_back(ends);
@@ -112,7 +137,7 @@ void PatternMesh::number_edges(const std::vector<Triangle>& panel_triangles) {
 }
 
 std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_handler,
-                                               const std::vector<Triangle>& panel_triangles) {
+                                               const SimulationMeshPart& part) {
   const unsigned int n_local = fe.n_dofs_per_cell();
   const unsigned int n_nodes_per_cell = n_local / 3;
   // Each element node's cell corners, from the barycentric coordinates of its support point
@@ -155,19 +180,21 @@ std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned()) continue;
     const int t = static_cast<int>(cell->id().get_coarse_cell_id());
+    const MeshPartTriangle& triangle = part.triangle(t);
     // The cell's corners among its triangle's, by position (deal.II may order them its own
-    // way): unwelded vertex, grain and layout coordinates.
-    std::array<int, 3> unwelded{};
+    // way): unwelded and welded vertex, grain and layout coordinates.
+    std::array<int, 3> unwelded{}, welded{};
     std::array<Vec2, 3> grain, layout;
     for (unsigned int v = 0; v < 3; ++v) {
       layout[v] = Vec2(cell->vertex(v)[0], cell->vertex(v)[1]);
       int k = 0;
       for (int j = 1; j < 3; ++j)
-        if ((mesh.layout_positions_m[panel_triangles[t][j]] - layout[v]).squaredNorm() <
-            (mesh.layout_positions_m[panel_triangles[t][k]] - layout[v]).squaredNorm())
+        if ((triangle.layout_m[j] - layout[v]).squaredNorm() <
+            (triangle.layout_m[k] - layout[v]).squaredNorm())
           k = j;
-      unwelded[v] = panel_triangles[t][k];
-      grain[v] = mesh.rest_triangles[t][k];
+      unwelded[v] = triangle.unwelded[k];
+      welded[v] = triangle.welded[k];
+      grain[v] = triangle.rest_m[k];
     }
     // The affine map from layout to grain coordinates, J = dX_grain / dX_layout, read off the
     // rest triangle; shape gradients then transform as grad_grain = J^-T grad_layout.
@@ -192,13 +219,14 @@ std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_
       }
     }
     cell_index.push_back(t);
+    cell_corners.push_back(triangle.welded);
     cell_dofs.push_back(dofs);
     cell_grain_area_ratio.push_back(grain_area_ratio);
     cell_node_rest_area_m2.push_back(node_area_m2);
     cell_JxW_m2.push_back(JxW);
     cell_grad_grain.push_back(grad_grain);
     if (element_degree == 2)
-      for (unsigned int v = 0; v < 3; ++v) cell_vertices[t][v] = mesh.welded_index[unwelded[v]];
+      for (unsigned int v = 0; v < 3; ++v) cell_vertices[t][v] = welded[v];
 
     // Each element node's copy: a corner's unwelded vertex orders its welded vertex's copies,
     // the cell its edge's midpoint's.
@@ -209,13 +237,12 @@ std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_
       copy.rest_area_m2 = node_area_m2[a];
       if (corners[a].size() == 1) {
         copy.order = unwelded[corners[a][0]];
-        copy.node = mesh.welded_index[copy.order];
+        copy.node = welded[corners[a][0]];
       } else {
-        std::array<int, 2> ends{mesh.welded_index[unwelded[corners[a][0]]],
-                                mesh.welded_index[unwelded[corners[a][1]]]};
+        std::array<int, 2> ends{welded[corners[a][0]], welded[corners[a][1]]};
         std::sort(ends.begin(), ends.end());
         copy.order = t;
-        copy.node = mesh.n_vertices + edge_index.at(ends);
+        copy.node = n_vertices_ + edge_index.at(ends);
       }
       node_copies.push_back(copy);
     }
@@ -226,6 +253,7 @@ std::vector<NodeCopy> PatternMesh::build_cells(const dealii::DoFHandler<2>& dof_
       merged_copies = node_copies.size();
     }
   }
+  cell_corners.shrink_to_fit();
   cell_dofs.shrink_to_fit();
   cell_JxW_m2.shrink_to_fit();
   cell_grad_grain.shrink_to_fit();
@@ -292,11 +320,11 @@ DofVector PatternMesh::dof_positions(const std::vector<Vec3>& positions_m) const
   DofVector x = dof_vector();
   for (int node = 0; node < n_local_nodes(); ++node) {
     const int global = global_nodes_[node];
-    if (global < mesh.n_vertices) {
+    if (global < n_vertices_) {
       set_node_position(x, node, positions_m[global]);
     } else {
       // Midpoints start on their chords; the contact predictor lifts those inside the body.
-      const std::array<int, 2>& ends = edge_ends[global - mesh.n_vertices];
+      const std::array<int, 2>& ends = edge_ends[global - n_vertices_];
       set_node_position(x, node, 0.5 * (positions_m[ends[0]] + positions_m[ends[1]]));
     }
   }
@@ -326,7 +354,7 @@ std::vector<Vec3> PatternMesh::vertex_positions(const DofVector& x) const {
   std::vector<Vec3> owned_positions(n_owned_nodes());
   for (int k = 0; k < n_owned_nodes(); ++k) owned_positions[k] = node_position(x, owned_nodes[k]);
   std::vector<Vec3> positions = gather_nodes(owned_positions);
-  positions.resize(mesh.n_vertices);  // the vertices come first
+  positions.resize(n_vertices_);  // the vertices come first
   return positions;
 }
 

@@ -9,9 +9,11 @@
 // one layer of ghosts round them, and deal.II numbers the garment's DoFs over the ranks. A node's
 // copies across seams may lie on cells of ranks that share no cell: they are gathered by
 // communication (node_copies_exchange.h). The triangulation and DoF handler only build the
-// arrays below and are dropped once they are filled. Still replicated (read from the garment
-// mesh every rank holds): the welded edges of quadratic triangles (edge_ends, edge_index) and
-// each cell's corners (cell_vertices) for the traction recovery (docs/performance.md, MPI).
+// arrays below and are dropped once they are filled. The garment mesh itself need be whole on
+// rank 0 only: the setup reads each rank's part of it, sent from there (mesh_part.h). Quadratic
+// triangles still need the whole mesh on every rank: their welded edges (edge_ends,
+// edge_index), each cell's corners (cell_vertices) and the surface's normals for the traction
+// recovery are of the whole surface (docs/performance.md, MPI).
 //
 // Nodes: welded vertex w is node w; with degree 2, welded edge e's midpoint is node
 // n_vertices + e. A node has one DoF triple per panel it lies in: the first carries it, the
@@ -27,6 +29,7 @@
 #include "core/compact_lists.h"
 #include "core/constrained_directions.h"
 #include "fem/cell_table.h"
+#include "fem/mesh_part.h"
 #include "fem/node_copies_exchange.h"
 
 #include <deal.II/base/index_set.h>
@@ -53,8 +56,10 @@ using DofVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
 class PatternMesh {
  public:
-  // Partitions the cells over `comm` (collective); throws std::invalid_argument for a degree other
-  // than 1 or 2.
+  // Partitions the cells over `comm` (collective). problem.mesh and problem.constraints are read
+  // on rank 0 only, and may be null and empty on the others with linear triangles; quadratic
+  // ones need the mesh on every rank. Throws std::invalid_argument (on every rank) for a degree
+  // other than 1 or 2, without a mesh on rank 0, or with degree 2 and a rank without one.
   PatternMesh(const Problem& problem, int element_degree, MPI_Comm communicator);
 
   GlobalDof n_dofs() const { return owned_dofs.size(); }
@@ -64,7 +69,7 @@ class PatternMesh {
   // Local node -> its global number, and back (-1: not a node of this rank).
   int global_node(int node) const { return global_nodes_[node]; }
   int find_node(int global) const;
-  int n_vertices() const { return mesh.n_vertices; }
+  int n_vertices() const { return n_vertices_; }
   // This rank's own cells (see cell_dofs), and the cells of all ranks.
   int n_cells() const { return cell_dofs.size(); }
   int n_all_cells() const { return n_all_cells_; }
@@ -105,7 +110,8 @@ class PatternMesh {
   // driver reads whole on every rank.
   std::vector<Vec3> vertex_positions(const DofVector& x) const;
 
-  const SimulationMesh& mesh;
+  // The whole mesh, with degree 2 only (null for degree 1: the setup reads the rank's part).
+  const SimulationMesh* whole_mesh = nullptr;
   int element_degree;
   MPI_Comm comm;
   dealii::FESystem<2> fe;
@@ -136,7 +142,10 @@ class PatternMesh {
   // pair (empty for degree 1).
   std::vector<std::array<int, 2>> edge_ends;
   std::map<std::array<int, 2>, int> edge_index;
-  ConstrainedDirections node_constrained;  // the Problem's constraints at each local node
+  // Rank 0's Problem::constraints (every rank's rigid-motion pins are chosen from them), and
+  // them at each local node.
+  std::vector<VertexConstraint> constraints;
+  ConstrainedDirections node_constrained;
   // Degree 2, per cell of all ranks (by panel triangle): its corners' welded vertices in the
   // order of the cell's own (that of hat_values), for the traction recovery, which every rank
   // runs on the whole surface (empty for degree 1).
@@ -151,6 +160,7 @@ class PatternMesh {
   // configuration, so they are computed once. Each cell's arrays have one length, and are
   // stored in one block per kind (cell_table.h).
   std::vector<int> cell_index;
+  std::vector<Triangle> cell_corners;  // its welded vertices, in the triangle's order
   CellTable<GlobalDof> cell_dofs;
   CellTable<double> cell_JxW_m2;
   CellTable<Vec2> cell_grad_grain;
@@ -172,11 +182,17 @@ class PatternMesh {
 
   // Mean rest edge length over the triangles' edges (an interior edge counted twice), m.
   double mean_edge_m = 0.0;
+  // The whole mesh's mean_rest_edge_length_m and rest area (the stop rule's tension scale).
+  double mean_rest_edge_m = 0.0;
+  double rest_area_m2 = 0.0;
   // Per local node, its own rest edge length h_k (contact_nodes.h), m: it sets the node's
   // contact penalty and its force unit in Newton's stop rule.
   std::vector<double> node_edge_m;
+  // Per local node, its positive rest area w_k for contact (nodal_rest_areas_m2), m^2.
+  std::vector<double> node_contact_area_m2;
 
  private:
+  int n_vertices_ = 0;
   int n_nodes_ = 0;
   int n_all_cells_ = 0;
   std::vector<int> global_nodes_;  // local node -> global node, ascending
@@ -185,13 +201,15 @@ class PatternMesh {
   // The local nodes with a copy other than the carrying one among this rank's DoFs.
   std::vector<int> seam_nodes_;
 
-  // Degree 2: numbers the welded edges (edge_ends, edge_index) in the order the panel
-  // triangles meet them.
-  void number_edges(const std::vector<Triangle>& panel_triangles);
+  // Degree 2: numbers the welded edges (edge_ends, edge_index) in the order the triangles
+  // meet them.
+  void number_edges(const std::vector<Triangle>& welded_triangles);
   // The own cells' arrays (and their corners in cell_vertices); returns each of their element
   // nodes' copy and rest area share, for exchange_node_copies.
   std::vector<NodeCopy> build_cells(const dealii::DoFHandler<2>& dof_handler,
-                                    const std::vector<Triangle>& panel_triangles);
+                                    const SimulationMeshPart& part);
+  // node_edge_m and node_contact_area_m2: each rank's own cells' shares, summed over the ranks.
+  void sum_node_lengths_and_areas(const SimulationMeshPart& part);
   // The local nodes, their copies and rest areas from exchange_node_copies; relevant_dofs, the
   // partitioner, owned_nodes and seam_nodes_.
   void keep_relevant_nodes(const std::vector<NodeCopy>& node_copies);

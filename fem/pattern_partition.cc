@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <unordered_map>
 #include <utility>
 
 namespace tightfit {
@@ -41,58 +42,41 @@ dealii::SparsityPattern welded_edge_graph(const SimulationMesh& mesh) {
 
 }  // namespace
 
-std::vector<unsigned int> partition_triangles(const SimulationMesh& mesh, MPI_Comm comm) {
-  const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+std::vector<unsigned int> partition_triangles(const SimulationMesh& mesh, int n_ranks) {
   std::vector<unsigned int> partition(mesh.triangles.size(), 0);
-  if (n_ranks == 1) return partition;
-  if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+  if (n_ranks > 1)
     dealii::SparsityTools::partition(welded_edge_graph(mesh), n_ranks, partition,
                                      dealii::SparsityTools::Partitioner::metis);
-  MPI_Bcast(partition.data(), static_cast<int>(partition.size()), MPI_UNSIGNED, 0, comm);
   return partition;
 }
 
 dealii::TriangulationDescription::Description<2, 2> own_cells_description(
-    const SimulationMesh& mesh, const std::vector<Triangle>& panel_triangles,
-    const std::vector<unsigned int>& partition, MPI_Comm comm) {
-  const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
-  // The corners of this rank's triangles; a triangle touching one is stored (its own or a
-  // ghost).
-  std::vector<char> own_corner(mesh.n_unwelded_vertices(), 0);
-  for (std::size_t t = 0; t < panel_triangles.size(); ++t)
-    if (partition[t] == rank)
-      for (const int u : panel_triangles[t]) own_corner[u] = 1;
-  const auto stored = [&](std::size_t t) {
-    return std::any_of(panel_triangles[t].begin(), panel_triangles[t].end(),
-                       [&](int u) { return own_corner[u] != 0; });
-  };
-
+    const SimulationMeshPart& part, MPI_Comm comm) {
   dealii::TriangulationDescription::Description<2, 2> description;
   description.comm = comm;
   description.settings = dealii::TriangulationDescription::Settings::default_setting;
   description.smoothing = dealii::Triangulation<2>::none;
   description.cell_infos.resize(1);
   // The own and ghost cells' vertices, numbered in the order they are met.
-  std::vector<int> local_vertex(mesh.n_unwelded_vertices(), -1);
-  for (std::size_t t = 0; t < panel_triangles.size(); ++t) {
-    if (!stored(t)) continue;
+  std::unordered_map<int, unsigned int> local_vertex;
+  for (const MeshPartTriangle& triangle : part.triangles) {
     dealii::CellData<2> cell(3);
     for (int k = 0; k < 3; ++k) {
-      const int u = panel_triangles[t][k];
-      if (local_vertex[u] < 0) {
-        local_vertex[u] = static_cast<int>(description.coarse_cell_vertices.size());
-        const Vec2& x = mesh.layout_positions_m[u];
+      const auto [it, added] = local_vertex.emplace(
+          triangle.unwelded[k], static_cast<unsigned int>(description.coarse_cell_vertices.size()));
+      if (added) {
+        const Vec2& x = triangle.layout_m[k];
         description.coarse_cell_vertices.emplace_back(x.x(), x.y());
       }
-      cell.vertices[k] = local_vertex[u];
+      cell.vertices[k] = it->second;
     }
-    cell.material_id = mesh.triangle_panel[t];
+    cell.material_id = triangle.panel;
     description.coarse_cells.push_back(cell);
-    description.coarse_cell_index_to_coarse_cell_id.push_back(t);
+    description.coarse_cell_index_to_coarse_cell_id.push_back(triangle.index);
 
     dealii::TriangulationDescription::CellData<2> info;
-    info.id = dealii::CellId(t, {}).template to_binary<2>();
-    info.subdomain_id = partition[t];
+    info.id = dealii::CellId(triangle.index, {}).template to_binary<2>();
+    info.subdomain_id = triangle.rank;
     info.level_subdomain_id = dealii::numbers::invalid_subdomain_id;  // no multigrid levels
     info.manifold_id = dealii::numbers::flat_manifold_id;
     info.manifold_line_ids.fill(dealii::numbers::flat_manifold_id);

@@ -1,10 +1,12 @@
-// The pattern mesh split over the ranks (`mpirun -np N pattern_mesh_mpi_check [DEGREE]`): every
-// panel triangle is the own cell of exactly one rank; every node is owned by exactly one rank
-// and has one copy per panel it lies in, as the welded mesh counts them; the nodes' rest areas,
-// each summed over the ranks' cells by the node copies' exchange, add up to the two 18.78 cm x
-// 24 cm panels' area; the DoFs are whole node blocks and number every panel vertex (and panel
-// edge) once; with quadratic triangles, each cell's corners are its triangle's. Exits non-zero
-// on the first failed check.
+// The pattern mesh split over the ranks (`mpirun -np N pattern_mesh_mpi_check [DEGREE
+// [mesh-on-rank-0]]`): every panel triangle is the own cell of exactly one rank; every node is
+// owned by exactly one rank and has one copy per panel it lies in, as the welded mesh counts
+// them; the nodes' rest areas, each summed over the ranks' cells by the node copies' exchange,
+// and their contact areas add up to the two 18.78 cm x 24 cm panels' area; the DoFs are whole
+// node blocks and number every panel vertex (and panel edge) once; with quadratic triangles,
+// each cell's corners are its triangle's. With `mesh-on-rank-0` the pattern is built from a
+// problem that has the mesh and the held ends on rank 0 only (the check itself reads the mesh on
+// every rank). Exits non-zero on the first failed check.
 #include "fem/pattern_mesh.h"
 #include "tube_problem.h"
 
@@ -35,11 +37,17 @@ int main(int argc, char** argv) {
   using namespace tightfit;
   dealii::Utilities::MPI::MPI_InitFinalize runtime(argc, argv, 1);
   const int degree = argc >= 2 ? std::stoi(argv[1]) : 1;
+  const bool mesh_on_rank_0 = argc >= 3 && argv[2] == std::string("mesh-on-rank-0");
   const MPI_Comm comm = MPI_COMM_WORLD;
   const int rank = static_cast<int>(dealii::Utilities::MPI::this_mpi_process(comm));
   const testing::TubeCase tube("st venant kirchhoff", EndCondition::held_ends);
   const SimulationMesh& mesh = tube.mesh;
-  const PatternMesh pattern(tube.problem, degree, comm);
+  Problem problem = tube.problem;
+  if (mesh_on_rank_0 && rank > 0) {
+    problem.mesh = nullptr;
+    problem.constraints.clear();
+  }
+  const PatternMesh pattern(problem, degree, comm);
 
   // Each triangle an own cell of one rank.
   std::vector<int> own(mesh.triangles.size(), 0), owners(mesh.triangles.size(), 0);
@@ -74,6 +82,31 @@ int main(int argc, char** argv) {
         "the nodes' rest areas sum to " + std::to_string(total_m2) + " m^2, not " +
             std::to_string(panels_m2));
 
+  // The contact areas (a third of each triangle's rest area at its corners; with degree 2 a
+  // twelfth, and a quarter at each edge's midpoint) and the edge lengths of the owned nodes;
+  // the constrained nodes: the held rows' vertices, whichever rank holds the mesh.
+  double contact_m2 = 0.0;
+  int n_constrained = 0;
+  for (const int node : pattern.owned_nodes) {
+    contact_m2 += pattern.node_contact_area_m2[node];
+    check(pattern.node_edge_m[node] > 0.0,
+          "node " + std::to_string(pattern.global_node(node)) + " has no edge length");
+    n_constrained += pattern.node_constrained.constrained(node);
+  }
+  contact_m2 = dealii::Utilities::MPI::sum(contact_m2, comm);
+  check(std::abs(contact_m2 - panels_m2) <= 1e-12 * panels_m2,
+        "the nodes' contact areas sum to " + std::to_string(contact_m2) + " m^2, not " +
+            std::to_string(panels_m2));
+  std::set<int> held;
+  for (const VertexConstraint& c : tube.problem.constraints)
+    held.insert(c.vertices.begin(), c.vertices.end());
+  // With degree 2, the midpoints of the held rows' edges are held too.
+  std::size_t expected_held = held.size();
+  for (const auto& ends : pattern.edge_ends)
+    expected_held += held.count(ends[0]) && held.count(ends[1]);
+  check(dealii::Utilities::MPI::sum(n_constrained, comm) == static_cast<int>(expected_held),
+        "the constrained nodes are not the held rows' " + std::to_string(expected_held));
+
   // DoFs: three per panel vertex (and panel edge's midpoint: a seam edge has one in each
   // panel), in node blocks.
   std::size_t expected_nodes = mesh.n_unwelded_vertices();
@@ -103,8 +136,11 @@ int main(int argc, char** argv) {
 
   const int all_failures = dealii::Utilities::MPI::sum(failures, comm);
   if (rank == 0)
-    std::printf("%u ranks, degree %d: %d cells, %d nodes, %u DoFs, rest area %.15g m^2: %s\n",
-                dealii::Utilities::MPI::n_mpi_processes(comm), degree, pattern.n_all_cells(),
-                pattern.n_nodes(), pattern.n_dofs(), total_m2, all_failures ? "FAILED" : "ok");
+    std::printf(
+        "%u ranks, degree %d%s: %d cells, %d nodes, %u DoFs, rest area %.15g m^2, contact area "
+        "%.15g m^2: %s\n",
+        dealii::Utilities::MPI::n_mpi_processes(comm), degree,
+        mesh_on_rank_0 ? ", mesh on rank 0" : "", pattern.n_all_cells(), pattern.n_nodes(),
+        pattern.n_dofs(), total_m2, contact_m2, all_failures ? "FAILED" : "ok");
   return all_failures == 0 ? 0 : 1;
 }
