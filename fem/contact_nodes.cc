@@ -51,17 +51,6 @@ void add_nodal_rest_areas(const Triangle& v, double area_m2, int n_vertices,
   }
 }
 
-std::vector<double> nodal_rest_areas_m2(const SimulationMesh& mesh,
-                                        const std::map<std::array<int, 2>, int>& edge_index,
-                                        int element_degree) {
-  const std::vector<double> areas = rest_triangle_areas(mesh);
-  std::vector<double> area(mesh.n_vertices + edge_index.size(), 0.0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    add_nodal_rest_areas(mesh.triangles[t], areas[t], mesh.n_vertices, edge_index, element_degree,
-                         area);
-  return area;
-}
-
 std::vector<double> nodal_penalties_N_per_m(const std::vector<double>& node_rest_area_m2,
                                             double beta_Y_N_per_m,
                                             const std::vector<double>& node_edge_m) {

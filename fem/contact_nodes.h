@@ -75,12 +75,9 @@ std::vector<double> node_edge_lengths_m(const std::vector<double>& length_sum_m,
 // without contact, so each triangle is split at its edge midpoints into four linear triangles of
 // area A/4 whose lumped masses give A/12 to each corner and A/4 to each midpoint (3 x A/12 + 3 x
 // A/4 = A). `edge_index` maps a sorted welded vertex pair to its edge's midpoint node minus
-// n_vertices.
-std::vector<double> nodal_rest_areas_m2(const SimulationMesh& mesh,
-                                        const std::map<std::array<int, 2>, int>& edge_index,
-                                        int element_degree);
-// One triangle's shares (welded corners `v`, rest area `area_m2`) added to `area_m2_of_node`
-// (of every node: n_vertices, then the midpoints).
+// n_vertices. Each triangle (welded corners `v`, rest area `area_m2`) adds its shares to
+// `area_m2_of_node` (of every node: n_vertices, then the midpoints); summed over every triangle
+// (over the ranks, each its own), they are the w_k.
 void add_nodal_rest_areas(const Triangle& v, double area_m2, int n_vertices,
                           const std::map<std::array<int, 2>, int>& edge_index, int element_degree,
                           std::vector<double>& area_m2_of_node);

@@ -188,7 +188,7 @@ class PatternMesh {
   // Per local node, its own rest edge length h_k (contact_nodes.h), m: it sets the node's
   // contact penalty and its force unit in Newton's stop rule.
   std::vector<double> node_edge_m;
-  // Per local node, its positive rest area w_k for contact (nodal_rest_areas_m2), m^2.
+  // Per local node, its positive rest area w_k for contact (add_nodal_rest_areas), m^2.
   std::vector<double> node_contact_area_m2;
 
  private:
