@@ -96,7 +96,7 @@ namespace {
 PanelOutline& panel_named(Pattern& pattern, const std::string& name, const std::string& what) {
   for (auto& outline : pattern.panels)
     if (outline.name == name) return outline;
-  throw PatternError(what + ": no panel '" + name + "'");
+  throw PatternError(what + ": no panel '" + name + "'" + closest_panels(pattern, name));
 }
 
 }  // namespace

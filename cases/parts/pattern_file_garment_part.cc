@@ -18,7 +18,9 @@ void add_declarations(pattern::Pattern& p, ParameterTree& prm) {
   for (const std::string& name : kept) {
     bool found = false;
     for (const auto& panel : p.panels) found = found || panel.name == name;
-    if (!found) throw std::invalid_argument("Panels: the pattern has no panel '" + name + "'");
+    if (!found)
+      throw std::invalid_argument("Panels: the pattern has no panel '" + name + "'" +
+                                  pattern::closest_panels(p, name));
   }
   if (!kept.empty())
     p.panels.erase(std::remove_if(p.panels.begin(), p.panels.end(),
@@ -46,7 +48,8 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_file_name("File", "",
                           "The pattern: FreeSewing SVG (.svg, mm), GarmentCode JSON (.json) or "
-                          "AAMA DXF (.dxf); relative to the working directory.");
+                          "AAMA DXF (.dxf); a relative path is read from the working directory, "
+                          "else from the case file's folder.");
     prm.declare_double("Mesh edge length", 0, 0, ParameterTree::unbounded,
                        "Target triangle edge length of the Delaunay mesher (m); 0 takes "
                        "Garment/Edge length weft (scaled by Garment/Mesh scale).");
@@ -76,7 +79,7 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                      "each copy is the panel 'NAME mirrored'.");
   };
   e.parse = [](ParameterTree& prm) -> GarmentMaker {
-    const std::string file = prm.get("File");
+    const std::string file = prm.get_file_name("File");
     if (file.empty()) throw std::invalid_argument("File: no pattern file given");
     pattern::Pattern p = pattern::read_pattern_file(file);
     add_declarations(p, prm);
