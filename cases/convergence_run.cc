@@ -63,8 +63,8 @@ void print_level_sizes(std::ostream& log, const std::vector<int>& n_vertices,
   for (std::size_t k = 0; k < n_vertices.size(); ++k)
     log << (k == 0 ? " " : "; ") << k << ": " << n_vertices[k] << " vertices, " << n_triangles[k]
         << " triangles";
-  log << "\n  (a level takes some 3 to 8 times as long as the one before it; each level's time "
-         "and an estimate of the next are printed as it ends)\n";
+  log << "\n  (each level's time, and an estimate of the next one's, is printed as the level "
+         "ends)\n";
 }
 
 // The time the next level should take: this level's, scaled by the growth in vertices to the
