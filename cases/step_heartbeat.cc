@@ -7,7 +7,9 @@ namespace tightfit {
 
 std::string duration_text(double seconds) {
   char text[32];
-  if (seconds < 120)
+  if (seconds < 10)
+    std::snprintf(text, sizeof text, "%.1f s", seconds);
+  else if (seconds < 120)
     std::snprintf(text, sizeof text, "%.0f s", seconds);
   else if (seconds < 7200)
     std::snprintf(text, sizeof text, "%.1f min", seconds / 60);

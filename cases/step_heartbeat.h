@@ -12,7 +12,7 @@
 
 namespace tightfit {
 
-// "45 s", "2.5 min", "1.2 h": a duration as a progress line says it.
+// "0.4 s", "45 s", "2.5 min", "1.2 h": a duration as a progress line says it.
 std::string duration_text(double seconds);
 
 class StepHeartbeat {
