@@ -198,10 +198,9 @@ INSTANTIATE_TEST_SUITE_P(
                    "panel 'a', edge '1' has zero length"},
         BrokenFile{"truncated.svg", "<svg width=\"10mm\"><path class=\"fabric\" d=\"M 0,0 L",
                    "not valid XML"},
-        BrokenFile{
-            "arc.svg",
-            "<svg><path class=\"fabric\" id=\"p1\" d=\"M 0,0 L 10,0 A 5 5 0 0 1 0,0 z\"/></svg>",
-            "path 'p1' (panel 'p1'): unsupported path command 'A'"},
+        BrokenFile{"arc.svg",
+                   "<svg><path class=\"fabric\" id=\"p1\" d=\"M 0,0 L 10,0 R 5 5 0,0 z\"/></svg>",
+                   "path 'p1' (panel 'p1'): unsupported path command 'R'"},
         BrokenFile{"no_piece.svg", "<svg><path class=\"mark\" d=\"M 0,0 L 1,1\"/></svg>",
                    "no <path class=\"fabric\"> element"},
         BrokenFile{"truncated.dxf",
