@@ -7,6 +7,7 @@
 #include <dl_dxf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -46,9 +47,12 @@ std::string trimmed(std::string text) {
   return text;
 }
 
-// "KEY: value" -> value when `text` starts with `key` (case as AAMA writes it).
+// "KEY: value" -> value when `text` starts with `key`, in any case ("Piece Name:" as ASTM
+// D6673 prints it, "PIECE NAME:" as most exports do).
 std::optional<std::string> text_value(const std::string& text, const std::string& key) {
-  if (text.rfind(key, 0) != 0) return std::nullopt;
+  if (text.size() < key.size()) return std::nullopt;
+  for (std::size_t k = 0; k < key.size(); ++k)
+    if (std::toupper(static_cast<unsigned char>(text[k])) != key[k]) return std::nullopt;
   return trimmed(text.substr(key.size()));
 }
 

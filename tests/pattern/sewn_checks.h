@@ -5,6 +5,8 @@
 #pragma once
 
 #include "core/garment.h"
+#include "pattern/pattern_garment.h"
+#include "tests/pattern/mesh_topology.h"
 
 #include <gtest/gtest.h>
 
@@ -63,6 +65,23 @@ inline void expect_meshes_cover_outlines(const Garment& garment) {
     // each; 1e-12 relative is far above it.
     EXPECT_NEAR(triangles_area(panel), polygon, 1e-12 * polygon) << panel.name;
   }
+}
+
+// Meshes `pattern` at edge length `h`, sews it and checks the result: every seam closed, every
+// panel's mesh covering its outline, the welded surface consistently oriented, no edge of
+// three triangles, and `boundary_loops` loops of free edges (hems, necks, cuffs).
+inline Garment expect_sews_into(const Pattern& pattern, double h, std::size_t boundary_loops) {
+  PatternMeshOptions options;
+  options.edge_length_m = h;
+  const Garment garment = pattern_garment(pattern, options);
+  const SimulationMesh mesh = weld(garment);
+  expect_every_seam_closed(garment, mesh);
+  expect_meshes_cover_outlines(garment);
+  const MeshTopology top = topology(mesh);
+  EXPECT_EQ(top.misoriented_edges, 0);
+  EXPECT_EQ(top.overused_edges, 0);
+  EXPECT_EQ(top.boundary_loops.size(), boundary_loops);
+  return garment;
 }
 
 }  // namespace tightfit::pattern

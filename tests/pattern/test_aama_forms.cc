@@ -133,16 +133,7 @@ TEST(AamaForms, ChainedShuffledEntitiesReadMeshAndSew) {
                             " reversed; FRONT:" + f_left1 + "+" + f_left2 +
                             " reversed -- BACK:" + b_right);
   validate(p);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.02;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  expect_meshes_cover_outlines(garment);
-  const MeshTopology top = topology(mesh);
-  EXPECT_EQ(top.misoriented_edges, 0);
-  EXPECT_EQ(top.overused_edges, 0);
-  EXPECT_EQ(top.boundary_loops.size(), 2u) << "a tube: the hem and the top";
+  const Garment garment = expect_sews_into(p, 0.02, 2);  // a tube: the hem and the top
   // The front is a hexagon: its mesh's area is the shoelace area of its corners, to the
   // corners' 0.57 um times the perimeter.
   const Panel& front_mesh =
@@ -172,15 +163,8 @@ TEST(AamaForms, GradedFileListsItsSizesAndCutsTheOneChosen) {
   }
   p.seams = parse_seam_list("FRONT:2 -- BACK:4 reversed; FRONT:4 -- BACK:2 reversed");
   validate(p);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.03;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  expect_meshes_cover_outlines(garment);
-  for (const Panel& panel : garment.panels)  // rectangles: shoelace of the corners exactly
+  for (const Panel& panel : expect_sews_into(p, 0.03, 2).panels)  // rectangles: exact areas
     EXPECT_NEAR(triangles_area(panel), 0.42 * 0.61, 1e-13);
-  EXPECT_EQ(topology(mesh).boundary_loops.size(), 2u);
 }
 
 TEST(AamaForms, FileWithoutUnitIsRefusedUnlessOneIsGiven) {
@@ -197,14 +181,8 @@ TEST(AamaForms, FileWithoutUnitIsRefusedUnlessOneIsGiven) {
   EXPECT_NEAR(length_m(find_panel(p, "FRONT").edges[1].segments), 23.5 * 0.0254, 1e-15);
   p.seams = parse_seam_list("FRONT:2 -- BACK:4 reversed; FRONT:4 -- BACK:2 reversed");
   validate(p);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.03;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  for (const Panel& panel : garment.panels)
+  for (const Panel& panel : expect_sews_into(p, 0.03, 2).panels)
     EXPECT_NEAR(triangles_area(panel), 16 * 23.5 * 0.0254 * 0.0254, 1e-13);
-  EXPECT_EQ(topology(mesh).boundary_loops.size(), 2u);
   // A file that states its unit is not overridden.
   const std::string clash = error_of(data("aama_graded_sizes.dxf"), {"34", "inch"});
   EXPECT_NE(clash.find("the file says its unit ($INSUNITS 4), which is not the inch asked for"),

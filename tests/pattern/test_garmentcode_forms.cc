@@ -119,16 +119,7 @@ TEST(GarmentCodeForms, EveryCurvatureFormReadsMeshesAndSews) {
   EXPECT_EQ(bare.kind, Segment::Kind::quadratic);
   EXPECT_NEAR(point_at(bare, 0.5).x(), 0.415, 1e-15);
   validate(p);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.01;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  expect_meshes_cover_outlines(garment);
-  const MeshTopology top = topology(mesh);
-  EXPECT_EQ(top.misoriented_edges, 0);
-  EXPECT_EQ(top.overused_edges, 0);
-  EXPECT_EQ(top.boundary_loops.size(), 2u) << "sewn at both sides: the hem and the top";
+  expect_sews_into(p, 0.01, 2);  // sewn at both sides: the hem and the top
 }
 
 TEST(GarmentCodeForms, JumpsuitReadsMeshesAndSews) {
@@ -144,16 +135,7 @@ TEST(GarmentCodeForms, JumpsuitReadsMeshesAndSews) {
   const double r = 0.09471968255871255, c = (neck.end - neck.start).norm();
   EXPECT_NEAR(left_of(neck.start, neck.end, point_at(neck, 0.5)), r - std::sqrt(r * r - c * c / 4),
               1e-12);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.03;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  expect_meshes_cover_outlines(garment);
-  const MeshTopology top = topology(mesh);
-  EXPECT_EQ(top.misoriented_edges, 0);
-  EXPECT_EQ(top.overused_edges, 0);
-  EXPECT_EQ(top.boundary_loops.size(), 5u) << "the neck, two wrists, two ankles";
+  expect_sews_into(p, 0.03, 5);  // the neck, two wrists, two ankles
 }
 
 TEST(GarmentCodeForms, TorsoOfTheJumpsuitKeepsItsStitchesAndDropsTheOthers) {
@@ -171,15 +153,7 @@ TEST(GarmentCodeForms, TorsoOfTheJumpsuitKeepsItsStitchesAndDropsTheOthers) {
     for (const EdgeRange* side : {&seam.a, &seam.b})
       EXPECT_NE(std::find(torso.begin(), torso.end(), side->panel), torso.end());
   validate(p);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.03;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  const MeshTopology top = topology(mesh);
-  EXPECT_EQ(top.misoriented_edges, 0);
-  EXPECT_EQ(top.overused_edges, 0);
-  EXPECT_EQ(top.boundary_loops.size(), 4u) << "a vest: the neck, two armholes, the waist";
+  expect_sews_into(p, 0.03, 4);  // a vest: the neck, two armholes, the waist
   EXPECT_THROW(keep_panels(p, {"collar"}), PatternError);
 }
 

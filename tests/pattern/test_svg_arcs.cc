@@ -68,16 +68,7 @@ TEST(SvgArcs, RelativeCommandsAndArcsReadMeshAndSew) {
 
   p.seams = parse_seam_list("front:2 -- back:7 reversed; front:6 reversed -- back:2");
   validate(p);
-  PatternMeshOptions options;
-  options.edge_length_m = 0.02;
-  const Garment garment = pattern_garment(p, options);
-  const SimulationMesh mesh = weld(garment);
-  expect_every_seam_closed(garment, mesh);
-  expect_meshes_cover_outlines(garment);
-  const MeshTopology top = topology(mesh);
-  EXPECT_EQ(top.misoriented_edges, 0);
-  EXPECT_EQ(top.overused_edges, 0);
-  EXPECT_EQ(top.boundary_loops.size(), 2u);
+  expect_sews_into(p, 0.02, 2);
 }
 
 }  // namespace
