@@ -6,6 +6,7 @@
 #include "pattern/pattern_file.h"
 #include "pattern/pattern_garment.h"
 #include "tests/pattern/mesh_topology.h"
+#include "tests/pattern/pattern_files.h"
 #include "tests/pattern/sewn_checks.h"
 
 #include <gtest/gtest.h>
@@ -196,6 +197,120 @@ TEST(AamaForms, RealGapIsRefusedNamingTheBlockTheEndsAndTheGap) {
   EXPECT_NE(refused.find("(100, 560)"), std::string::npos) << refused;
   EXPECT_NE(refused.find("(105, 560)"), std::string::npos) << refused;
   EXPECT_NE(refused.find(", 5 a"), std::string::npos) << refused;  // "5 away" or "5 apart"
+}
+
+// A file written the way other CAD systems write AAMA: "Piece Name:" and "Size:" in mixed case,
+// the boundary one closed LWPOLYLINE repeating its first vertex, with a bulge (a sleeve cap),
+// an internal line on layer 14, the piece placed by INSERT, $INSUNITS 1 (inches).
+TEST_F(PatternFiles, AamaAsAnotherCadWritesItReadsInInches) {
+  const std::string path = write("sleeve.dxf",
+                                 "0\nSECTION\n"
+                                 "2\nHEADER\n"
+                                 "9\n$ACADVER\n"
+                                 "1\nAC1009\n"
+                                 "9\n$INSUNITS\n"
+                                 "70\n1\n"
+                                 "0\nENDSEC\n"
+                                 "0\nSECTION\n"
+                                 "2\nBLOCKS\n"
+                                 "0\nBLOCK\n"
+                                 "8\n0\n"
+                                 "2\nSLEEVE-M\n"
+                                 "70\n0\n"
+                                 "10\n0.0\n"
+                                 "20\n0.0\n"
+                                 "0\nTEXT\n"
+                                 "8\n1\n"
+                                 "10\n1\n"
+                                 "20\n1\n"
+                                 "40\n0.2\n"
+                                 "1\nPiece Name: Sleeve\n"
+                                 "0\nTEXT\n"
+                                 "8\n1\n"
+                                 "10\n1\n"
+                                 "20\n2\n"
+                                 "40\n0.2\n"
+                                 "1\nSize: M\n"
+                                 "0\nLWPOLYLINE\n"
+                                 "8\n1\n"
+                                 "90\n5\n"
+                                 "70\n1\n"
+                                 "10\n0.0\n"
+                                 "20\n0.0\n"
+                                 "10\n14.0\n"
+                                 "20\n0.0\n"
+                                 "10\n15.5\n"
+                                 "20\n16.0\n"
+                                 "42\n0.35\n"
+                                 "10\n-1.5\n"
+                                 "20\n16.0\n"
+                                 "10\n0.0\n"
+                                 "20\n0.0\n"
+                                 "0\nPOINT\n"
+                                 "8\n2\n"
+                                 "10\n0.0\n"
+                                 "20\n0.0\n"
+                                 "0\nPOINT\n"
+                                 "8\n2\n"
+                                 "10\n14.0\n"
+                                 "20\n0.0\n"
+                                 "0\nPOINT\n"
+                                 "8\n2\n"
+                                 "10\n15.5\n"
+                                 "20\n16.0\n"
+                                 "0\nPOINT\n"
+                                 "8\n2\n"
+                                 "10\n-1.5\n"
+                                 "20\n16.0\n"
+                                 "0\nLINE\n"
+                                 "8\n7\n"
+                                 "10\n7.0\n"
+                                 "20\n2.0\n"
+                                 "11\n7.0\n"
+                                 "21\n14.0\n"
+                                 "0\nPOLYLINE\n"
+                                 "8\n14\n"
+                                 "66\n1\n"
+                                 "70\n0\n"
+                                 "0\nVERTEX\n"
+                                 "8\n14\n"
+                                 "10\n7\n"
+                                 "20\n8\n"
+                                 "0\nVERTEX\n"
+                                 "8\n14\n"
+                                 "10\n8\n"
+                                 "20\n8\n"
+                                 "0\nSEQEND\n"
+                                 "8\n14\n"
+                                 "0\nENDBLK\n"
+                                 "0\nENDSEC\n"
+                                 "0\nSECTION\n"
+                                 "2\nENTITIES\n"
+                                 "0\nINSERT\n"
+                                 "8\n0\n"
+                                 "2\nSLEEVE-M\n"
+                                 "10\n0\n"
+                                 "20\n0\n"
+                                 "0\nTEXT\n"
+                                 "8\n0\n"
+                                 "10\n0\n"
+                                 "20\n0\n"
+                                 "40\n0.2\n"
+                                 "1\nUnits: ENGLISH\n"
+                                 "0\nENDSEC\n"
+                                 "0\nEOF\n");
+  const Pattern p = read_pattern_file(path);
+  ASSERT_EQ(p.panels.size(), 1u);
+  EXPECT_EQ(p.panels[0].name, "Sleeve");
+  ASSERT_EQ(p.panels[0].edges.size(), 4u);  // four turn points; the repeated vertex dropped
+  EXPECT_NEAR(length_m(p.panels[0].edges[0].segments), 14 * 0.0254, 1e-15);
+  // The cap: chord 17 in, bulge 0.35 (sweep 4 atan 0.35), radius chord / (2 sin(sweep / 2)),
+  // less the arc-length table's deficit L sweep^2 / (24 256^2).
+  const double sweep = 4 * std::atan(0.35), chord = 17 * 0.0254;
+  const double arc = sweep * chord / (2 * std::sin(sweep / 2));
+  EXPECT_NEAR(length_m(p.panels[0].edges[2].segments), arc * (1 - sweep * sweep / (24.0 * 65536)),
+              1e-12);
+  validate(p);
 }
 
 }  // namespace
