@@ -57,8 +57,9 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                      "34); empty: the file must hold one size.");
     prm.declare_selection("Units", "from file", "from file|mm|cm|inch",
                           "The unit of a DXF file that does not say ($INSUNITS absent): 'from "
-                          "file' takes $INSUNITS, else mm, refused when the largest piece would "
-                          "be under 2 cm or over 3 m across.");
+                          "file' takes $INSUNITS, else mm, refused when a piece would be under "
+                          "2 cm or over 3 m across or the largest under 10 cm; a unit given "
+                          "that contradicts $INSUNITS is refused.");
     prm.declare_text("Panels", "",
                      "The pattern's pieces to cut, a comma-separated list of panel names; "
                      "empty: every piece. The file's seams to pieces not cut are dropped "
