@@ -20,12 +20,14 @@ Usage:
       Runs the case on both backends on the same mesh and writes compare.csv.
   tightfit convergence CASE.prm [--levels N] [--output DIR] [--set ...]
       Runs the case on N meshes, halving the edge length each time, on both backends.
-  tightfit pattern FILE [--edge-length L] [--seams "..."] [--folds "..."] [--output DIR]
-      Reads a sewing pattern (.svg, .json, .dxf), prints its panels, edge lengths and seam
-      length mismatches, meshes it (target edge length L in m, default 0.01) and writes the
-      meshed panels (pattern.vtu) and a drawing of the outlines and seams (outlines.png) into
-      DIR (default output/pattern). --seams and --folds add declarations as in the case file's
-      Garment/Pattern file section (docs/patterns.md).
+  tightfit pattern FILE [--edge-length L] [--seams "..."] [--folds "..."] [--size S]
+                        [--units mm|cm|inch] [--output DIR]
+      Reads a sewing pattern (.svg, .json, .dxf), prints its sizes (a graded DXF), panels,
+      edge lengths and seam length mismatches, meshes it (target edge length L in m, default
+      0.01) and writes the meshed panels (pattern.vtu) and a drawing of the outlines and seams
+      (outlines.png) into DIR (default output/pattern). --seams, --folds, --size and --units
+      are the case file's Garment/Pattern file entries Seams, Fold edges, Size and Units
+      (docs/patterns.md).
   tightfit girths CASE.prm --near X,Y,Z --heights H1,H2,... [--axis X,Y,Z] [--set ...]
       Slices the case's body by planes normal to the axis (default 0,0,1) at each height (m,
       in the run's coordinates) and prints, for the loop round the point --near (a leg, not
@@ -131,6 +133,12 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
       cl.pattern_seams = value();
     } else if (first == "pattern" && a == "--folds") {
       cl.pattern_folds = value();
+    } else if (first == "pattern" && a == "--size") {
+      cl.pattern_size = value();
+    } else if (first == "pattern" && a == "--units") {
+      cl.pattern_units = value();
+      if (cl.pattern_units != "mm" && cl.pattern_units != "cm" && cl.pattern_units != "inch")
+        throw UsageError("--units must be mm, cm or inch, not '" + cl.pattern_units + "'");
     } else if (first == "girths" && (a == "--near" || a == "--heights" || a == "--axis")) {
       std::vector<double>& list = a == "--near"      ? cl.girths_near
                                   : a == "--heights" ? cl.girths_heights

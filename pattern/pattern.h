@@ -60,6 +60,13 @@ struct SeamSpec {
   EdgeRange a, b;
 };
 
+// What a file alone may leave open: which size of a graded file, and the unit of a file that
+// does not say (AAMA DXF without $INSUNITS).
+struct PatternFileOptions {
+  std::string size;   // empty: the file must hold one size
+  std::string units;  // empty (the file's, else mm checked for plausibility), mm, cm or inch
+};
+
 struct Pattern {
   std::string name;
   std::vector<PanelOutline> panels;
