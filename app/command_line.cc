@@ -67,7 +67,8 @@ std::vector<double> number_list(const std::string& option, const std::string& te
 std::vector<std::string> options_of(const std::string& command) {
   std::vector<std::string> options{"--output", "--set"};
   if (command == "convergence") options.push_back("--levels");
-  if (command == "pattern") options.insert(options.end(), {"--edge-length", "--seams", "--folds"});
+  if (command == "pattern")
+    options.insert(options.end(), {"--edge-length", "--seams", "--folds", "--size", "--units"});
   if (command == "girths") options.insert(options.end(), {"--near", "--heights", "--axis"});
   return options;
 }
