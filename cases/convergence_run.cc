@@ -1,7 +1,7 @@
 #include "cases/convergence_run.h"
 
 #include "cases/scenario.h"
-#include "cases/step_heartbeat.h"
+#include "core/step_heartbeat.h"
 #include "io/csv_table.h"
 
 #include <algorithm>

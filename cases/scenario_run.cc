@@ -1,6 +1,6 @@
 #include "cases/scenario_run.h"
 
-#include "cases/step_heartbeat.h"
+#include "core/step_heartbeat.h"
 
 #include "cases/body_surface_pressure.h"
 #include "core/interruption.h"

@@ -1,4 +1,4 @@
-#include "cases/step_heartbeat.h"
+#include "core/step_heartbeat.h"
 
 #include <cstdio>
 #include <ostream>
