@@ -1,5 +1,7 @@
 #include "app/command_line.h"
 
+#include "core/closest_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -61,6 +63,16 @@ std::vector<double> number_list(const std::string& option, const std::string& te
   return numbers;
 }
 
+// The options each command takes, for the message that refuses another.
+std::vector<std::string> options_of(const std::string& command) {
+  std::vector<std::string> options{"--output", "--set"};
+  if (command == "convergence") options.push_back("--levels");
+  if (command == "pattern")
+    options.insert(options.end(), {"--edge-length", "--seams", "--folds", "--size", "--units"});
+  if (command == "girths") options.insert(options.end(), {"--near", "--heights", "--axis"});
+  return options;
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv) {
@@ -80,14 +92,17 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     cl.command = "print-parameters";
     for (std::size_t i = 1; i < args.size(); ++i) {
       if (args[i] != "--prm" && args[i] != "--json")
-        throw UsageError("--print-parameters takes --prm or --json, not '" + args[i] + "'");
+        throw UsageError("--print-parameters takes --prm or --json, not '" + args[i] + "'" +
+                         did_you_mean(args[i], {"--prm", "--json"}));
       cl.parameters_format = args[i].substr(2);
     }
     return cl;
   }
-  if (first != "run" && first != "compare" && first != "convergence" && first != "pattern" &&
-      first != "girths")
-    throw UsageError("unknown command '" + first + "'");
+  const std::vector<std::string> commands{"run",     "compare",  "convergence",
+                                          "pattern", "girths",   "--print-parameters",
+                                          "--help",  "--version"};
+  if (std::find(commands.begin(), commands.begin() + 5, first) == commands.begin() + 5)
+    throw UsageError("unknown command '" + first + "'" + did_you_mean(first, commands));
   cl.command = first;
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -132,7 +147,8 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
       list = number_list(a, value());
       if (a != "--heights" && list.size() != 3) throw UsageError(a + " needs three numbers x,y,z");
     } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("unknown option '" + a + "'");
+      throw UsageError("unknown option '" + a + "' of " + first +
+                       did_you_mean(a, options_of(first)));
     } else {
       cl.case_files.push_back(a);
     }

@@ -1,5 +1,7 @@
 #include "pattern/pattern_file.h"
 
+#include "core/closest_names.h"
+
 #include "pattern/dxf_reader.h"
 #include "pattern/garmentcode_reader.h"
 #include "pattern/svg_reader.h"
@@ -103,8 +105,9 @@ std::vector<std::string> keep_panels(Pattern& pattern, const std::vector<std::st
     if (!found) {
       std::string all;
       for (const auto& panel : pattern.panels) all += (all.empty() ? "" : ", ") + panel.name;
-      throw PatternError("pattern '" + pattern.name + "' has no panel '" + name +
-                         "' (its panels: " + all + ")");
+      throw PatternError("pattern '" + pattern.name + "' has no panel '" + name + "'" +
+                         did_you_mean(name, panel_names(pattern), 0) + " (its panels: " + all +
+                         ")");
     }
   }
   pattern.panels.erase(std::remove_if(pattern.panels.begin(), pattern.panels.end(),
@@ -147,7 +150,7 @@ namespace {
 PanelOutline& panel_named(Pattern& pattern, const std::string& name, const std::string& what) {
   for (auto& outline : pattern.panels)
     if (outline.name == name) return outline;
-  throw PatternError(what + ": no panel '" + name + "'");
+  throw PatternError(what + ": no panel '" + name + "'" + closest_panels(pattern, name));
 }
 
 }  // namespace

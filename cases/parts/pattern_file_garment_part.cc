@@ -37,7 +37,8 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_file_name("File", "",
                           "The pattern: FreeSewing SVG (.svg, mm), GarmentCode JSON (.json) or "
-                          "AAMA DXF (.dxf); relative to the working directory.");
+                          "AAMA DXF (.dxf); a relative path is read from the working directory, "
+                          "else from the case file's folder.");
     prm.declare_double("Mesh edge length", 0, 0, ParameterTree::unbounded,
                        "Target triangle edge length of the Delaunay mesher (m); 0 takes "
                        "Garment/Edge length weft (scaled by Garment/Mesh scale).");
@@ -76,7 +77,7 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                      "each copy is the panel 'NAME mirrored'.");
   };
   e.parse = [](ParameterTree& prm) -> GarmentMaker {
-    const std::string file = prm.get("File");
+    const std::string file = prm.get_file_name("File");
     if (file.empty()) throw std::invalid_argument("File: no pattern file given");
     pattern::PatternFileOptions file_options;
     file_options.size = prm.get("Size");
