@@ -279,7 +279,7 @@ class Measurer {
     m_.parts.push_back(frame("torso", root, axis.direction, Vec3::UnitX(), 0.0));
   }
 
-  // Arms: followed from the armpit along the principal direction of the arm's vertices, then
+  // Arms: followed from the armpit along the principal direction of the arm's surface, then
   // along the axis through the sections' centroids; the shoulder point (acromion) the highest
   // point of the body within 4 cm outside the armpit, the wrist the arm's smallest girth
   // between 60 % and 90 % of the way from the shoulder to the fingertips, the upper arm its
@@ -290,11 +290,27 @@ class Measurer {
       const std::string s = side_name(side);
       const double sign = side == 0 ? 1.0 : -1.0;
       const Vec3& armpit = scan_.armpit_m[side];
+      // The arm's points: along every edge (every 1 cm, so that long faces count by their
+      // length), above the crotch and 1 cm outside the torso's side at their level (outside the
+      // armpit above it).
       std::vector<Vec3> arm;
-      for (const Vec3& v : surface_.vertices_m) {
-        const double out = sign * (v.x() - armpit.x());
-        if (out > 0.01 && v.z() > crotch + 0.6 * (armpit.z() - crotch)) arm.push_back(v);
-      }
+      const auto outside = [&](const Vec3& x) {
+        if (x.z() <= crotch) return false;
+        const int k = level_at(x.z());
+        const double side_x = x.z() >= armpit.z() || !torso(k)
+                                  ? sign * armpit.x()
+                                  : (side == 0 ? torso(k)->max_m.x() : -torso(k)->min_m.x());
+        return sign * x.x() > side_x + 0.01;
+      };
+      for (const Triangle& t : surface_.triangles)
+        for (int e = 0; e < 3; ++e) {
+          const Vec3& p = surface_.vertices_m[t[e]];
+          const Vec3& q = surface_.vertices_m[t[(e + 1) % 3]];
+          const int n = 1 + static_cast<int>((q - p).norm() / 0.01);
+          for (int i = 0; i < n; ++i)
+            if (const Vec3 x = p + (static_cast<double>(i) / n) * (q - p); outside(x))
+              arm.push_back(x);
+        }
       if (arm.size() < 10) throw BodyMeasureError("wrist " + s + ": no arm outside the armpit");
       const FittedLine guess = fit_line(arm, Vec3(sign, 0, 0));
       const Vec3 d = guess.direction;
@@ -305,12 +321,20 @@ class Measurer {
                                std::to_string(track.sections.size()) + " sections)");
       const Vec3 a = track.axis.direction;
       // The shoulder point (acromion): the top of the body above the middle between the armpit
-      // and the arm's axis at the armpit's level.
-      const Vec3 axis_at_armpit = track.axis.at_height(armpit.z());
+      // and the arm's axis at the armpit's level (an arm within 30 degrees of level: the axis's
+      // point nearest the armpit).
+      const Vec3 axis_at_armpit = std::abs(a.z()) > 0.5
+                                      ? track.axis.at_height(armpit.z())
+                                      : track.axis.point_m + a.dot(armpit - track.axis.point_m) * a;
       const double shoulder_x = 0.5 * (armpit.x() + axis_at_armpit.x());
+      // Its highest point on the plane x = shoulder_x: the section, not the vertices, so that a
+      // coarse mesh's faces count too.
       Vec3 shoulder(shoulder_x, 0, -1e9);
-      for (const Vec3& v : surface_.vertices_m)
-        if (std::abs(v.x() - shoulder_x) < 0.005 && v.z() > shoulder.z()) shoulder = v;
+      for (const SectionLoop& l : SectionCutter(surface_, Vec3::UnitX()).cut(shoulder_x))
+        for (const Vec3& p : l.points_m)
+          if (p.z() > shoulder.z()) shoulder = p;
+      if (shoulder.z() < armpit.z())
+        throw BodyMeasureError("shoulder point " + s + ": no body above the armpit");
       const double t_shoulder = a.dot(shoulder), t_end = track.sections.back().t_m;
       const double t_armpit = a.dot(armpit);
       int wrist = -1, upper = -1;
@@ -344,11 +368,11 @@ class Measurer {
     }
   }
 
-  // The neck: its narrowest section between the shoulder points and 10 % of the height below
-  // the top; its base the first level below where the section is 1.5 times as wide.
+  // The neck: its narrowest section between 3 cm below the shoulder points and 10 % of the height
+  // below the top; its base the first level below where the section is 1.5 times as wide.
   void neck() {
     const double shoulders = std::max(shoulder_[0].z(), shoulder_[1].z());
-    const int k0 = level_at(scan_.top_m - 0.1 * height()), k1 = level_at(shoulders);
+    const int k0 = level_at(scan_.top_m - 0.1 * height()), k1 = level_at(shoulders - 0.03);
     const auto width = [&](int k) { return scan_.core(k).max_m.x() - scan_.core(k).min_m.x(); };
     const int narrowest = extreme_level(
         k0, k1, [&](int k) { return scan_.core(k).perimeter_m; }, false);

@@ -25,13 +25,11 @@ double inner(const SectionLoop& loop, int side) {
 }
 
 // Whether the plane's loops show two legs apart under `above` (the torso's loop a level
-// higher): no loop round its centroid, and a loop of at least a tenth of its area on either
-// side of the centroid within its breadth. Returns the left and right legs' loops, or -1s.
-std::array<int, 2> legs_apart(const SectionCutter& cutter, const std::vector<SectionLoop>& loops,
-                              const SectionLoop& above) {
+// higher): a loop of at least a tenth of its area on either side of its centroid within its
+// breadth (one of them may still hold the centroid, where the thighs nearly touch). Returns the
+// left and right legs' loops, or -1s.
+std::array<int, 2> legs_apart(const std::vector<SectionLoop>& loops, const SectionLoop& above) {
   std::array<int, 2> legs = {-1, -1};
-  for (const SectionLoop& l : loops)
-    if (cutter.encloses(l, above.centroid_m)) return legs;
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const SectionLoop& l = loops[i];
     const double x = l.centroid_m.x();
@@ -83,9 +81,9 @@ TorsoScan scan_torso(const SectionCutter& cutter) {
     if (levels[k].core < 0 || levels[k].loops[i].area_m2 > levels[k].loops[levels[k].core].area_m2)
       levels[k].core = static_cast<int>(i);
   // An arm parts from the torso where the torso's side pulls in by more than 2 % of the height
-  // (3.5 cm on an adult: an arm is thicker) between two levels, with a loop of its own beside
-  // it. Looked for below the head (18 % of the height under the top), so an ear lobe does not
-  // count.
+  // (3.5 cm on an adult: an arm is thicker) between two levels, the arm's loop beside it (none
+  // below an arm held level). Looked for below the head (18 % of the height under the top), so an
+  // ear lobe does not count.
   const double pull_in = 0.02 * height;
   const auto torso_at = [&](double z, const Vec3& from) -> const SectionLoop* {
     static thread_local std::vector<SectionLoop> loops;
@@ -100,13 +98,13 @@ TorsoScan scan_torso(const SectionCutter& cutter) {
         scan.armpit_level[0] >= 0 && scan.armpit_level[1] >= 0 &&
         level.z_m < std::min(scan.armpit_m[0].z(), scan.armpit_m[1].z()) - 0.02 * height;
     if (below_armpits) {
-      const std::array<int, 2> legs = legs_apart(cutter, level.loops, above);
+      const std::array<int, 2> legs = legs_apart(level.loops, above);
       if (legs[0] >= 0) {
         // Between this level and the one above: halve the interval ten times (0.002 mm).
         double low = level.z_m, high = levels[k - 1].z_m;
         for (int i = 0; i < 10; ++i) {
           const double mid = 0.5 * (low + high);
-          (legs_apart(cutter, cutter.cut(mid), above)[0] >= 0 ? low : high) = mid;
+          (legs_apart(cutter.cut(mid), above)[0] >= 0 ? low : high) = mid;
         }
         scan.crotch_m = Vec3(above.centroid_m.x(), above.centroid_m.y(), 0.5 * (low + high));
         scan.crotch_level = k;
@@ -123,14 +121,15 @@ TorsoScan scan_torso(const SectionCutter& cutter) {
     for (int side = 0; side < 2; ++side) {
       if (scan.armpit_level[side] >= 0 || outer(here, side) > outer(above, side) - pull_in)
         continue;
-      int arm = -1;  // the loop beside the torso, nearest to it
+      // The arm: the loop nearest the torso whose centroid lies beyond the torso's side (on a
+      // coarse mesh it may overlap the torso's breadth, in front of or behind it).
+      int arm = -1;
       for (std::size_t i = 0; i < level.loops.size(); ++i) {
         const SectionLoop& l = level.loops[i];
-        if (static_cast<int>(i) == level.core || inner(l, side) < outer(here, side) - 0.005)
-          continue;
+        const double centre = side == 0 ? l.centroid_m.x() : -l.centroid_m.x();
+        if (static_cast<int>(i) == level.core || centre < outer(here, side)) continue;
         if (arm < 0 || inner(l, side) < inner(level.loops[arm], side)) arm = static_cast<int>(i);
       }
-      if (arm < 0) continue;
       const double threshold = 0.5 * (outer(here, side) + outer(above, side));
       double low = level.z_m, high = levels[k - 1].z_m;
       for (int i = 0; i < 10; ++i) {
@@ -138,14 +137,18 @@ TorsoScan scan_torso(const SectionCutter& cutter) {
         const SectionLoop* torso = torso_at(mid, here.centroid_m);
         (torso && outer(*torso, side) < threshold ? low : high) = mid;
       }
-      const SectionLoop& a = level.loops[arm];
-      // The armpit: in the gap between torso and arm, at the arm's innermost point's depth.
-      Vec3 innermost = a.points_m.front();
-      for (const Vec3& p : a.points_m)
-        if ((side == 0 ? p.x() < innermost.x() : p.x() > innermost.x())) innermost = p;
+      // The armpit: in the gap between torso and arm, at the arm's innermost point's depth; an
+      // arm held level (T-pose) leaves no loop below it: then on the torso's side.
       const double sign = side == 0 ? 1.0 : -1.0;
-      scan.armpit_m[side] = Vec3(sign * 0.5 * (outer(here, side) + inner(a, side)), innermost.y(),
-                                 0.5 * (low + high));
+      scan.armpit_m[side] = Vec3(sign * outer(here, side), here.centroid_m.y(), 0.5 * (low + high));
+      if (arm >= 0) {
+        const SectionLoop& a = level.loops[arm];
+        Vec3 innermost = a.points_m.front();
+        for (const Vec3& p : a.points_m)
+          if ((side == 0 ? p.x() < innermost.x() : p.x() > innermost.x())) innermost = p;
+        scan.armpit_m[side].x() = sign * 0.5 * (outer(here, side) + inner(a, side));
+        scan.armpit_m[side].y() = innermost.y();
+      }
       scan.armpit_level[side] = k;
     }
   }
