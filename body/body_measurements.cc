@@ -190,19 +190,21 @@ class Measurer {
     const auto range = [&](double high, double low) {  // levels from z = high down to low
       return std::pair<int, int>(level_at(high), level_at(low) + 1);
     };
-    // Bust: the first level down from 1 cm below the armpits where the torso's front stands out
-    // (reaches further forward than every level within 3 cm of it: the breasts, or a man's
-    // chest, not a belly below it), searched down to 55 % of the way from the crotch to the
-    // armpits; without one, the level there where the torso reaches furthest forward.
-    auto [b0, b1] = range(armpit - 0.01, crotch + 0.55 * (armpit - crotch));
+    // Bust: the first level down from just below the armpits (0.6 % of the height) where the
+    // torso's front stands out (reaches further forward than every torso level within 1.7 % of
+    // the height, 3 cm on an adult: the breasts, or a man's chest, not a belly below it),
+    // searched down to 55 % of the way from the crotch to the armpits; without one, the level
+    // there where the torso reaches furthest forward.
+    auto [b0, b1] = range(armpit - 0.006 * height(), crotch + 0.55 * (armpit - crotch));
     const auto front_y = [&](int k) {
       return torso_value(k, [](const SectionLoop& l) { return l.min_m.y(); });
     };
-    const int window = std::max(1, static_cast<int>(std::lround(0.03 / scan_.step_m)));
+    // The window scales with the body: 3 cm on a person 1.75 m tall.
+    const int window = std::max(1, static_cast<int>(std::lround(0.017 * height() / scan_.step_m)));
     int bust = -1;
-    for (int k = b0 + window; k + window < b1 && bust < 0; ++k) {
+    for (int k = b0; k < b1 && bust < 0; ++k) {
       bool stands_out = std::isfinite(front_y(k));
-      for (int j = k - window; j <= k + window && stands_out; ++j)
+      for (int j = std::max(0, k - window); j <= k + window && stands_out; ++j)
         if (front_y(j) < front_y(k)) stands_out = false;
       if (stands_out) bust = k;
     }
