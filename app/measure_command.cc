@@ -121,11 +121,11 @@ int measure_command(int argc, const char* const* argv, std::ostream& out) {
     if (!o.overrides.empty()) throw UsageError("measure: --set applies to a case file only");
     surface = import_surface(read_polygon_mesh(o.file), o.import);
     check_body_surface(surface, false, "body mesh '" + o.file + "'");
-    description =
-        "body mesh '" + o.file + "' (" + std::to_string(surface.triangles.size()) + " triangles)";
+    description = "body mesh '" + o.file + "' (" + std::to_string(surface.triangles.size()) +
+                  " triangles; " + describe_extent(body_extent(surface.vertices_m)) + ")";
   }
   const BodyExtent extent = body_extent(surface.vertices_m);
-  out << "Measuring " << description << ": " << describe_extent(extent) << "\n\n";
+  out << "Measuring " << description << "\n\n";
   check_standing_person(extent, "body '" + o.file + "'");
   const BodyMeasurements m = measure_body(surface);
   for (const TextTable& t : measurement_tables(m)) out << t << "\n";

@@ -45,6 +45,9 @@ void check_body_size(const BodyExtent& extent, const std::string& what) {
   if (largest > 4.0)
     throw BodyMeasureError(what + ": the body is " + describe_extent(extent) +
                            "; no body a garment is made for is over 4 m." + units_hint);
+  if (largest < 0.01)
+    throw BodyMeasureError(what + ": the body is " + describe_extent(extent) +
+                           "; no body a garment is made for is under 1 cm." + units_hint);
   const double across = std::max(s.x(), s.y());
   if (across > 1.2 && across > 2 * s.z())
     throw BodyMeasureError(

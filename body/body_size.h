@@ -20,7 +20,8 @@ BodyExtent body_extent(const std::vector<Vec3>& vertices_m);
 std::string describe_extent(const BodyExtent& extent);
 
 // Any body a garment goes on: throws BodyMeasureError (body_measurements.h) when the body is
-// larger than a person can be (over 4 m along an axis: the file's units are not metres) or
+// larger than a person can be (over 4 m along an axis: the file's units are not metres),
+// smaller than any garment's body (under 1 cm along every axis: likewise) or
 // lies down (over 1.2 m across and more than twice as long across as it is tall: the up axis
 // is not the file's). `what` starts the message (the file's name).
 void check_body_size(const BodyExtent& extent, const std::string& what);

@@ -37,7 +37,7 @@ TEST(BodySize, MillimetresReadAsMetresAreRefusedNamingTheUnits) {
 
 TEST(BodySize, MetresReadAsMillimetresAreRefusedNamingTheUnits) {
   const std::string m = refusal(box(Vec3(0.0006, 0.0003, 0.0017)));
-  EXPECT_NE(m.find("0.0017 m tall"), std::string::npos) << m;
+  EXPECT_NE(m.find("under 1 cm"), std::string::npos) << m;
   EXPECT_NE(m.find("--units"), std::string::npos) << m;
 }
 
@@ -52,6 +52,8 @@ TEST(BodySize, LimbAndCubeOfACaseAreNotPeopleButPass) {
   EXPECT_NO_THROW(check_body_size(box(Vec3(0.15, 0.15, 0.9)), "leg"));
   EXPECT_NO_THROW(check_body_size(box(Vec3(2, 2, 2)), "cube"));
   EXPECT_THROW(check_body_size(box(Vec3(200, 200, 200)), "cube"), BodyMeasureError);
+  // A leg in metres read as millimetres: 0.9 mm long.
+  EXPECT_THROW(check_body_size(box(Vec3(0.00015, 0.00015, 0.0009)), "leg"), BodyMeasureError);
 }
 
 }  // namespace
