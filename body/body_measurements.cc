@@ -370,11 +370,11 @@ class Measurer {
     }
   }
 
-  // The neck: its narrowest section between 3 cm below the shoulder points and 10 % of the height
+  // The neck: its narrowest section between 3 cm below the shoulder points and 12 % of the height
   // below the top; its base the first level below where the section is 1.5 times as wide.
   void neck() {
     const double shoulders = std::max(shoulder_[0].z(), shoulder_[1].z());
-    const int k0 = level_at(scan_.top_m - 0.1 * height()), k1 = level_at(shoulders - 0.03);
+    const int k0 = level_at(scan_.top_m - 0.12 * height()), k1 = level_at(shoulders - 0.03);
     const auto width = [&](int k) { return scan_.core(k).max_m.x() - scan_.core(k).min_m.x(); };
     const int narrowest = extreme_level(
         k0, k1, [&](int k) { return scan_.core(k).perimeter_m; }, false);
