@@ -34,6 +34,15 @@ Usage:
       the other one), its girth along the section and as a tape reads it (the convex hull),
       its area and centroid, and the line through the first and last centroids: the limb's
       axis for Placement/Tube round axis (docs/stocking.md).
+  tightfit measure BODY [--units m|cm|mm|SCALE] [--up +y] [--output DIR]
+  tightfit measure CASE.prm [--set ...] [--output DIR]
+      Finds a body's landmarks, part axes and standard girths (bust, waist, hips, thigh,
+      knee, calf, ankle B, upper arm, wrist; height, shoulder width, arm length), prints them
+      and the named regions built from them, and writes measurements.json, measurements.csv
+      and body.png (front and side with landmarks and tape lines) into DIR (default
+      output/measure/<file name>). BODY is an OBJ, STL or PLY file (--units: metres per unit
+      or m, cm, mm, default m; --up: the file's up axis, default +z); a case's body is read as
+      the case reads it (docs/bodies.md, "Measuring a body").
   tightfit --print-parameters [--prm | --json]
       Lists every parameter with its documentation, unit and default (--prm: as a case file to
       start from; --json: with each entry's allowed values).

@@ -4,6 +4,7 @@
 #include "app/compare_command.h"
 #include "app/convergence_command.h"
 #include "app/girths_command.h"
+#include "app/measure_command.h"
 #include "app/mpi_session.h"
 #include "app/pattern_command.h"
 #include "app/run_command.h"
@@ -21,6 +22,8 @@ int main(int argc, char** argv) {
   std::ostringstream discarded;
   std::ostream& out = mpi.is_first_rank() ? std::cout : discarded;
   try {
+    // measure reads its own options (app/measure_command.h).
+    if (argc > 1 && std::string(argv[1]) == "measure") return measure_command(argc, argv, out);
     CommandLine cl = parse_command_line(argc, argv);
     cl.rank = mpi.rank();
     cl.n_ranks = mpi.n_ranks();

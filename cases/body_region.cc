@@ -17,6 +17,13 @@ bool RegionShape::contains(const Vec3& x) const {
       return (x.array() >= a.array()).all() && (x.array() <= b.array()).all();
     case Kind::ball:
       return (x - a).squaredNorm() <= low * low;
+    case Kind::tube: {
+      const Vec3 d = x - a;
+      const double along = b.dot(d);
+      return along >= tube_low && along <= tube_high && (d - along * b).squaredNorm() <= low * low;
+    }
+    case Kind::named:
+      throw std::logic_error("region shape '" + text + "' is used before the body resolved it");
   }
   return false;
 }
@@ -79,6 +86,48 @@ std::string format(double value) {
   return out.str();
 }
 
+std::string known_shapes() {
+  std::string list = "slab, box, ball";
+  for (const std::string& n : anatomical_region_names()) list += ", " + n;
+  return list;
+}
+
+// "under-bust band front 0.04", "B left": the longest known name the words start with, then a
+// side, a facing and a width, each optional.
+RegionShape parse_named_shape(const std::vector<std::string>& words, const std::string& text) {
+  RegionShape s;
+  s.kind = RegionShape::Kind::named;
+  s.text = text;
+  std::size_t used = 0;
+  for (const std::string& name : anatomical_region_names()) {
+    std::istringstream in(name);
+    std::size_t n = 0;
+    bool match = true;
+    for (std::string w; in >> w; ++n)
+      if (n >= words.size() || words[n] != w) match = false;
+    if (match && n > used) {
+      used = n;
+      s.named.name = name;
+    }
+  }
+  if (used == 0)
+    throw std::invalid_argument("unknown shape '" + words.front() + "' (known: " + known_shapes() +
+                                ")");
+  for (std::size_t i = used; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    if (w == "left" || w == "right") {
+      s.named.side = w == "left" ? 0 : 1;
+    } else if (w == "front" || w == "back") {
+      s.named.facing = w == "front" ? 1 : -1;
+    } else {
+      s.named.width_m = number(w, "the width");
+      if (!(s.named.width_m > 0))
+        throw std::invalid_argument("the width " + w + " m is not positive");
+    }
+  }
+  return s;
+}
+
 // One shape from its words: "slab x 0.1 0.2", "box 0,0,0 1,1,1", "ball 0,0,0 0.1".
 RegionShape parse_shape(const std::vector<std::string>& words, const std::string& text) {
   RegionShape s;
@@ -119,12 +168,62 @@ RegionShape parse_shape(const std::vector<std::string>& words, const std::string
     if (s.low < 0) throw std::invalid_argument("the radius " + format(s.low) + " m is negative");
     if (s.low == 0) throw std::invalid_argument("the ball is empty: its radius is zero");
   } else {
-    throw std::invalid_argument("unknown shape '" + kind + "' (known: slab, box, ball)");
+    return parse_named_shape(words, text);
   }
   return s;
 }
 
 }  // namespace
+
+bool has_named_shapes(const std::vector<BodyRegion>& regions) {
+  for (const BodyRegion& r : regions)
+    for (const RegionShape& s : r.shapes)
+      if (s.kind == RegionShape::Kind::named) return true;
+  return false;
+}
+
+void resolve_named_regions(std::vector<BodyRegion>& regions, const BodyMeasurements& body) {
+  for (BodyRegion& region : regions) {
+    std::vector<RegionShape> shapes;
+    for (const RegionShape& s : region.shapes) {
+      if (s.kind != RegionShape::Kind::named) {
+        shapes.push_back(s);
+        continue;
+      }
+      std::vector<RegionPiece> pieces;
+      try {
+        pieces = anatomical_region(body, s.named);
+      } catch (const std::exception& e) {
+        throw BodyMeasureError("region '" + region.name + "', shape '" + s.text + "': " + e.what());
+      }
+      for (const RegionPiece& p : pieces) {
+        RegionShape r;
+        std::ostringstream text;
+        text.precision(4);
+        if (p.kind == RegionPiece::Kind::box) {
+          r.kind = RegionShape::Kind::box;
+          r.a = p.min_m;
+          r.b = p.max_m;
+          text << "box " << r.a.x() << "," << r.a.y() << "," << r.a.z() << " " << r.b.x() << ","
+               << r.b.y() << "," << r.b.z();
+        } else {
+          r.kind = RegionShape::Kind::tube;
+          r.a = p.point_m;
+          r.b = p.axis.normalized();
+          r.low = p.radius_m;
+          r.tube_low = p.low_m;
+          r.tube_high = p.high_m;
+          text << "tube round " << r.a.x() << "," << r.a.y() << "," << r.a.z() << " along "
+               << r.b.x() << "," << r.b.y() << "," << r.b.z() << " from " << r.tube_low << " to "
+               << r.tube_high << " radius " << r.low;
+        }
+        r.text = s.text + " = " + text.str();
+        shapes.push_back(r);
+      }
+    }
+    region.shapes = std::move(shapes);
+  }
+}
 
 std::vector<BodyRegion> parse_body_regions(const std::string& definitions) {
   // "0.1, 0, 0.5" reads as one word "0.1,0,0.5".

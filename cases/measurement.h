@@ -39,6 +39,10 @@ class Measurement {
                                      const StepMeasurement& /*step*/) const {
     return {};
   }
+  // Called once before the first load step is solved, the body in its starting shape: what
+  // needs the body (the landmarks a named region is built from) is found here, so that a body
+  // on which it cannot be found stops the run before any solve.
+  virtual void prepare(const Scenario& /*scenario*/) {}
   // Called after every load step is measured (on every rank, the step whole), and once when
   // the run ends (with every step that finished), to write files of its own into
   // `files.directory`. At the end only the last step holds its per-vertex arrays (state, field),

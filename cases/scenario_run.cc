@@ -115,6 +115,7 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   std::unique_ptr<Backend> backend = make_backend(scenario.problem);
   result.backend = backend->name();
   scenario.prepare_step(0);
+  for (const auto& measurement : measurements) measurement->prepare(scenario);
   backend->set_positions(scenario.initial_positions());
 
   // Opening the files is this rank's alone: under MPI the others must not be left waiting.

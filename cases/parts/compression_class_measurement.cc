@@ -5,6 +5,7 @@
 #include "cases/compression_class.h"
 #include "cases/parts/part_entries.h"
 #include "cases/region_pressure.h"
+#include "cases/scenario_landmarks.h"
 #include "cases/step_measurement.h"
 #include "core/closest_names.h"
 #include "core/units.h"
@@ -19,6 +20,12 @@ namespace {
 class CompressionClassMeasurement final : public Measurement {
  public:
   explicit CompressionClassMeasurement(BodyRegion ankle) : ankle_(std::move(ankle)) {}
+
+  void prepare(const Scenario& scenario) override {
+    std::vector<BodyRegion> regions = {ankle_};
+    resolve_named_regions(regions, scenario);
+    ankle_ = regions.front();
+  }
 
   std::vector<std::string> columns() const override {
     return {"ankle_p_mean_mmHg", "compression_class"};

@@ -1,6 +1,7 @@
 // Body/Kind = mesh: a rigid body read from a closed triangle or quad mesh (OBJ, STL, PLY; a
 // scanned or modelled limb or torso; contact/mesh_body.h). It does not change between load
 // steps: alpha is ignored.
+#include "body/body_size.h"
 #include "cases/parts/mesh_body_settings.h"
 #include "cases/parts/part_entries.h"
 
@@ -19,7 +20,7 @@ class MeshScenarioBody final : public ScenarioBody {
   void morph(int, double) override {}
   std::string describe() const override {
     return "mesh body '" + file_ + "' (" + std::to_string(body_->surface().triangles.size()) +
-           " triangles)";
+           " triangles; " + describe_extent(body_extent(body_->surface().vertices_m)) + ")";
   }
 
  private:
@@ -81,7 +82,12 @@ PartEntry<BodyMaker> mesh_body_entry() {
   e.parse = [](ParameterTree& prm) -> BodyMaker {
     const MeshBodySettings s = parse_mesh_body_settings(prm);
     return [=](const Garment&) -> std::unique_ptr<ScenarioBody> {
-      return std::make_unique<MeshScenarioBody>(load_mesh_body(s.file, s.options), s.file);
+      std::unique_ptr<MeshBody> body = load_mesh_body(s.file, s.options);
+      // A body a thousand times too large (millimetres read as metres) or lying down (the
+      // wrong up axis) stops here, before any placement or solve (docs/bodies.md).
+      check_body_size(body_extent(body->surface().vertices_m),
+                      "Body/Mesh: body mesh '" + s.file + "'");
+      return std::make_unique<MeshScenarioBody>(std::move(body), s.file);
     };
   };
   return e;

@@ -5,6 +5,7 @@
 #include "cases/csv_measurement.h"
 #include "cases/parts/part_entries.h"
 #include "cases/region_pressure.h"
+#include "cases/scenario_landmarks.h"
 #include "cases/step_measurement.h"
 #include "core/units.h"
 
@@ -25,6 +26,8 @@ class RegionsMeasurement final : public CsvMeasurement {
                                        "p_peak_Pa", "p_mean_mmHg", "p_peak_mmHg", "normal_force_N",
                                        "n_contact_vertices", "garment_area_m2", "note"}),
         regions_(std::move(regions)) {}
+
+  void prepare(const Scenario& scenario) override { resolve_named_regions(regions_, scenario); }
 
   std::vector<TextTable> summary_tables(const Scenario& /*scenario*/,
                                         const std::vector<StepMeasurement>& steps) const override {
@@ -88,7 +91,10 @@ PartEntry<MeasurementMaker> regions_measurement_entry() {
         "Named regions of space, 'NAME: SHAPE [+ SHAPE ...]; NAME: ...', each the union of its "
         "shapes: 'slab AXIS LOW HIGH' (the points whose height along AXIS, one of x, y, z or a "
         "direction a,b,c, lies between LOW and HIGH, m), 'box XMIN,YMIN,ZMIN XMAX,YMAX,ZMAX' "
-        "(m), 'ball X,Y,Z RADIUS' (m). A garment vertex counts by the share of its area inside "
+        "(m), 'ball X,Y,Z RADIUS' (m), or a region named by anatomy and built from the body's "
+        "landmarks, 'NAMED [left|right] [front|back] [WIDTH]' with NAMED one of bust, "
+        "under-bust band, waist band, hip band, scapulae, B, C, G, knee, calf, thigh (WIDTH, m, "
+        "replaces its default). A garment vertex counts by the share of its area inside "
         "(docs/measurements.md).");
   };
   e.parse = [](ParameterTree& prm) -> MeasurementMaker {

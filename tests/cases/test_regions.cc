@@ -1,8 +1,12 @@
 // Pressure by body region (cases/body_region.h, cases/region_pressure.h): the region syntax and
-// its errors, and on the paper's garment T on a growing cylinder (uniform pressure), a slab
-// across the middle of the tube reading the closed-form pressure and the contact area 2 pi r h.
+// its errors, named regions built on a body, and on the paper's garment T on a growing cylinder
+// (uniform pressure), a slab across the middle of the tube reading the closed-form pressure and the
+// contact area 2 pi r h.
+#include "body/body_measurements.h"
 #include "cases/body_region.h"
 #include "cases/region_pressure.h"
+#include "contact/mesh_import.h"
+#include "contact/polygon_mesh.h"
 #include "garment_t_run.h"
 
 #include <gtest/gtest.h>
@@ -61,6 +65,58 @@ TEST(BodyRegions, BadDefinitionsSayWhatAndWhere) {
   EXPECT_NE(message("a: slab w 0 1").find("not three numbers"), std::string::npos);
   EXPECT_NE(message("a: slab z 0 1cm").find("'1cm' is not a number"), std::string::npos);
   EXPECT_NE(message("slab z 0 1").find("expected 'NAME: SHAPE"), std::string::npos);
+}
+
+// Regions named by anatomy (docs/bodies.md, "Named regions"): parsed as requests, refused if
+// used before the body resolves them, then built on MakeHuman's default female from her
+// landmarks (body/body_measurements.h).
+TEST(BodyRegions, NamedShapesAreBuiltFromTheBodysLandmarks) {
+  std::vector<BodyRegion> regions =
+      parse_body_regions("ankle: B left 0.03; under: under-bust band front; thighs: G");
+  ASSERT_TRUE(has_named_shapes(regions));
+  EXPECT_EQ(regions[0].shapes[0].named.name, "B");
+  EXPECT_EQ(regions[0].shapes[0].named.side, 0);
+  EXPECT_DOUBLE_EQ(regions[0].shapes[0].named.width_m, 0.03);
+  EXPECT_EQ(regions[1].shapes[0].named.name, "under-bust band");
+  EXPECT_EQ(regions[1].shapes[0].named.facing, 1);
+  EXPECT_THROW(regions[0].contains(Vec3::Zero()), std::logic_error);
+
+  MeshImportOptions o;
+  o.up_axis = "+y";
+  const BodyMeasurements body = measure_body(
+      import_surface(read_polygon_mesh(std::string(TIGHTFIT_SOURCE_DIR) +
+                                       "/data/bodies/makehuman_default_female_body_m.obj"),
+                     o));
+  resolve_named_regions(regions, body);
+  EXPECT_FALSE(has_named_shapes(regions));
+  // B left: a band 3 cm along the left leg's axis round B (in at 1.4 cm, out at 1.6 cm), not
+  // round the right leg's B.
+  const Vec3 b = body.landmark("B left").point_m;
+  const Vec3 up = -body.part("leg left").along;
+  EXPECT_TRUE(regions[0].contains(b + 0.014 * up));
+  EXPECT_FALSE(regions[0].contains(b + 0.016 * up));
+  EXPECT_FALSE(regions[0].contains(body.landmark("B right").point_m));
+  // The under-bust band's front holds the front of the under-bust line, not its back.
+  const BodyGirth& under = body.girth("under-bust");
+  Vec3 front = under.hull_m.front(), back = front;
+  for (const Vec3& p : under.hull_m) {
+    if (p.y() < front.y()) front = p;
+    if (p.y() > back.y()) back = p;
+  }
+  EXPECT_TRUE(regions[1].contains(front));
+  EXPECT_FALSE(regions[1].contains(back));
+  // G without a side: both legs.
+  EXPECT_EQ(regions[2].shapes.size(), 2u);
+  EXPECT_TRUE(regions[2].contains(body.landmark("G right").point_m));
+  // A side the torso does not have, refused at resolution naming the region.
+  std::vector<BodyRegion> bad = parse_body_regions("chest: bust left");
+  try {
+    resolve_named_regions(bad, body);
+    FAIL() << "a bust on the left was built";
+  } catch (const BodyMeasureError& e) {
+    EXPECT_NE(std::string(e.what()).find("region 'chest', shape 'bust left'"), std::string::npos)
+        << e.what();
+  }
 }
 
 // On garment T (garment_t_run.h) the tube presses uniformly, so a slab across its middle
