@@ -281,8 +281,10 @@ void declare_stop_rule(ParameterHandler& prm) {
                     "force a smooth strain error of this size leaves on a vertex, so the "
                     "tolerance bounds the strain error on every mesh (docs/model.md, 'Reaching "
                     "equilibrium'). The FE backend counts each node's residual relative to its "
-                    "own edge (R_k h / h_k). 0: the FE backend's own absolute rule, Finite "
-                    "elements/Residual tolerance (the mass-spring backend needs a value above 0).");
+                    "own edge (R_k h / h_k) and also meets its own absolute rule, Finite "
+                    "elements/Residual tolerance (the tighter by default). 0: off, for the FE "
+                    "backend only (its own rule alone); the mass-spring backend needs a value "
+                    "above 0.");
   prm.declare_entry("Stop norm", to_string(d.norm), Patterns::Selection("largest|rms"),
                     "Which size of the residual force field the stop rule (Relative tolerance) "
                     "and the mass-spring stall test read. 'largest': the largest residual on any "

@@ -127,7 +127,7 @@ TEST(SlideDamping, LeavesTheStableStateOfATubeOnACylinder) {
   ASSERT_TRUE(slid.report.has_relaxation);
   EXPECT_EQ(slid.report.relaxation.slide_damping_per_s, 30.0);
   EXPECT_GT(slid.report.relaxation.slide_frames, 0);
-  EXPECT_LT(slid.report.relaxation.slide_frames, slid.report.iterations);
+  EXPECT_LE(slid.report.relaxation.slide_frames, slid.report.iterations);
   EXPECT_EQ(plain.report.relaxation.slide_frames, 0);
 }
 
