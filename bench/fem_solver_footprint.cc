@@ -111,6 +111,6 @@ int main(int argc, char** argv) {
           memory.c_str());
     std::fflush(stdout);
   }
-  if (rank == 0) std::printf("%s\n", report.detail.c_str());
+  if (rank == 0) std::printf("%s\n", report.text().c_str());
   return 0;
 }

@@ -286,6 +286,68 @@ void declare_output(ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
+// The stop rule both backends read (core/load_step.h; docs/model.md, "Reaching equilibrium").
+// Defaults: the ones every case measured on the mass-spring backend and the FE cases on a
+// body mesh set (docs/parameters.md).
+void declare_stop_rule(ParameterHandler& prm) {
+  const StopRule d;
+  prm.declare_entry("Relative tolerance", "1e-4", Patterns::Double(0, 1),
+                    "Stop rule of both backends, dimensionless: a state is stable when its "
+                    "residual force (Stop norm; internal + contact + gravity, held components "
+                    "removed) is below this times the tension scale Y h^2 / L: the law's "
+                    "stiffness scale Y (N/m) times the mean rest edge length h (m) squared over "
+                    "the garment's size L (m, the square root of its rest area). That is the "
+                    "force a smooth strain error of this size leaves on a vertex, so the "
+                    "tolerance bounds the strain error on every mesh (docs/model.md, 'Reaching "
+                    "equilibrium'). The FE backend counts each node's residual relative to its "
+                    "own edge (R_k h / h_k) and also meets its own absolute rule, Finite "
+                    "elements/Residual tolerance (the tighter by default). 0: off, for the FE "
+                    "backend only (its own rule alone); the mass-spring backend needs a value "
+                    "above 0.");
+  prm.declare_entry("Stop norm", to_string(d.norm), Patterns::Selection("largest|rms"),
+                    "Which size of the residual force field the stop rule (Relative tolerance) "
+                    "and the mass-spring stall test read. 'largest': the largest residual on any "
+                    "vertex (the FE backend: its largest component). 'rms': the root mean square "
+                    "over the vertices, sqrt(sum |f|^2 / n), for a garment on a faceted body "
+                    "mesh where a few vertices chatter in a limit cycle the largest residual "
+                    "never leaves (docs/dressing.md).");
+  prm.declare_entry("Gap tolerance", "1e-8", Patterns::Double(1e-15, 1),
+                    "Largest penetration of a vertex in contact at a finished load step with "
+                    "contact multiplier updates, m (both backends).");
+}
+
+// The stop rule's entries once lived in each backend's subsection, with other defaults: a case
+// file that still sets one there is refused with the entry to use instead.
+const char* const moved_entries[] = {"Relative tolerance", "Stop norm", "Gap tolerance"};
+
+void declare_moved_entries(ParameterHandler& prm, const std::string& subsection) {
+  prm.enter_subsection(subsection);
+  for (const char* name : moved_entries)
+    prm.declare_entry(name, "", Patterns::Anything(),
+                      std::string("Moved: set Solver/") + name +
+                          " instead (one stop rule for both backends). Refused here.");
+  prm.leave_subsection();
+}
+
+StopRule parse_stop_rule(ParameterHandler& prm) {
+  prm.enter_subsection("Solver");
+  StopRule rule;
+  rule.relative_tolerance = prm.get_double("Relative tolerance");
+  rule.norm = prm.get("Stop norm") == "rms" ? StopNorm::rms : StopNorm::largest;
+  rule.gap_tolerance_m = prm.get_double("Gap tolerance");
+  prm.leave_subsection();
+  return rule;
+}
+
+void refuse_moved_entries(ParameterHandler& prm, const std::string& subsection) {
+  prm.enter_subsection(subsection);
+  for (const char* name : moved_entries)
+    if (!prm.get(name).empty())
+      throw std::invalid_argument(subsection + "/" + name + " has moved: set Solver/" + name +
+                                  " (one stop rule for both backends; docs/parameters.md)");
+  prm.leave_subsection();
+}
+
 void declare_case_parameters(ParameterHandler& prm) {
   declare_garment(prm);
   declare_material(prm);
@@ -302,8 +364,12 @@ void declare_case_parameters(ParameterHandler& prm) {
   prm.declare_entry("Backend", "massspring", Patterns::Selection(registry.names_joined("|")),
                     "The cloth solver: massspring (the paper's particle model with RK4) or fem "
                     "(a finite-element membrane solved by Newton's method).");
+  declare_stop_rule(prm);
   prm.leave_subsection();
-  for (const BackendEntry& entry : registry.entries()) entry.declare_parameters(prm);
+  for (const BackendEntry& entry : registry.entries()) {
+    entry.declare_parameters(prm);
+    declare_moved_entries(prm, entry.subsection);
+  }
 }
 
 }  // namespace
@@ -404,6 +470,9 @@ CaseParameters parse_case_parameters(ParameterHandler& prm, const std::string& c
   prm.enter_subsection("Solver");
   c.backend = prm.get("Backend");
   prm.leave_subsection();
+  c.stop_rule = parse_stop_rule(prm);
+  for (const BackendEntry& entry : backend_registry().entries())
+    refuse_moved_entries(prm, entry.subsection);
 
   auto require = [](bool ok, const std::string& message) {
     if (!ok) throw std::invalid_argument(message);
@@ -544,7 +613,7 @@ std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
                                 std::to_string(problem.friction_coefficient) + ": the " + name +
                                 " backend has no friction yet; set it to 0 or use Solver/Backend "
                                 "= massspring");
-  return entry.create(problem, *prm_);
+  return entry.create(problem, parse_stop_rule(*prm_), *prm_);
 }
 
 void CaseFile::print(std::ostream& out, ParameterFormat format) const {

@@ -7,6 +7,7 @@
 #include "cases/scenario_body.h"
 #include "contact/pressure_extractor.h"
 #include "core/backend.h"
+#include "core/load_step.h"
 #include "core/material.h"
 #include "core/mesh_geometry.h"
 #include "core/rectangle_panel.h"
@@ -132,6 +133,8 @@ struct CaseParameters {
   std::vector<NamedMeasurement> measurements;
   OutputSettings output;
   std::string backend = "massspring";
+  // The stop rule and gap tolerance of either backend (Solver subsection).
+  StopRule stop_rule;
 };
 
 // A case file: every entry declared (with units, ranges and documentation, each backend's

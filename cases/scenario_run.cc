@@ -170,7 +170,7 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       if (table) table->write_row(pressure_row(m));
       for (const auto& measurement : measurements) measurement->after_step(scenario, m, files);
       if (solver_log.is_open())
-        solver_log << "step " << m.step << ", alpha " << m.alpha << ": " << m.report.detail
+        solver_log << "step " << m.step << ", alpha " << m.alpha << ": " << m.report.text()
                    << std::endl;
       if (write_garment) {
         char stem[64];

@@ -56,7 +56,7 @@ StepMeasurement solve_and_measure(Scenario& scenario, Backend& backend, int step
     message << "load step " << step << " (alpha " << m.alpha
             << "): the garment touches the body nowhere although it is smaller than the body; "
                "it slipped off or the solver lost it";
-    throw SolverError(message.str());
+    throw SolverError(StopReason::contact_lost, message.str());
   }
   return m;
 }

@@ -4,6 +4,7 @@
 
 #include "core/garment.h"
 #include "core/material.h"
+#include "core/step_report.h"
 #include "core/surface_state.h"
 
 #include <stdexcept>
@@ -56,20 +57,16 @@ struct LoadStep {
   bool gravity_on = false;
 };
 
-// What solve() reports of a step it finished: it returns only at equilibrium (residual below
-// the stop rule's threshold) and throws SolverError otherwise.
-struct StepReport {
-  int iterations = 0;        // frames (mass-spring) or Newton steps (FE)
-  double residual_N = 0.0;   // largest residual force on a free vertex at the end
-  double tolerance_N = 0.0;  // the stop rule's threshold
-  double wall_seconds = 0.0;
-  std::string detail;  // one line for the log
-};
-
-// Thrown when a backend cannot reach equilibrium; the message names the step and residual.
+// Thrown when a backend cannot reach equilibrium; the message names the step and residual,
+// reason() says why as a field (core/step_report.h).
 class SolverError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  SolverError(StopReason reason, const std::string& message)
+      : std::runtime_error(message), reason_(reason) {}
+  StopReason reason() const { return reason_; }
+
+ private:
+  StopReason reason_;
 };
 
 class Backend {
@@ -79,6 +76,8 @@ class Backend {
   // Positions of the welded vertices to start from, m.
   virtual void set_positions(const std::vector<Vec3>& positions_m) = 0;
   // Brings the garment to static equilibrium against the body as it is now.
+  // Returns only at equilibrium (stop_reason converged: the residual below the stop rule's
+  // threshold, the contact gap closed) and throws SolverError otherwise.
   virtual StepReport solve(const LoadStep& step) = 0;
   // The equilibrium just reached (or the current state after a failure).
   virtual SurfaceState state() const = 0;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/backend.h"
+#include "core/load_step.h"
 
 #include <functional>
 #include <memory>
@@ -20,10 +21,15 @@ struct BackendEntry {
   // Whether the backend applies Coulomb friction (Problem::friction_coefficient); one that does
   // not refuses a problem with friction rather than solving a frictionless one in its place.
   bool applies_friction = false;
-  // Declares the backend's own subsection (for example "Mass spring") in the handler.
+  // The backend's own subsection of a case file (for example "Mass spring").
+  std::string subsection;
+  // Declares that subsection in the handler.
   std::function<void(dealii::ParameterHandler&)> declare_parameters;
-  // Reads that subsection and creates the backend for `problem`.
-  std::function<std::unique_ptr<Backend>(const Problem&, dealii::ParameterHandler&)> create;
+  // Reads that subsection and creates the backend for `problem` with the shared stop rule (the
+  // case file's Solver entries, core/load_step.h).
+  std::function<std::unique_ptr<Backend>(const Problem&, const StopRule&,
+                                         dealii::ParameterHandler&)>
+      create;
 };
 
 class BackendRegistry {

@@ -1,5 +1,5 @@
-// The force scale of both backends' relative stop rules ('Mass spring/Relative tolerance',
-// 'Finite elements/Relative tolerance').
+// The force scale of both backends' relative stop rule ('Solver/Relative tolerance',
+// core/load_step.h).
 #pragma once
 
 #include "core/garment.h"

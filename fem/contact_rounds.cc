@@ -11,18 +11,6 @@
 
 namespace tightfit {
 
-namespace {
-
-std::string format_residuals(const std::vector<double>& values) {
-  std::ostringstream out;
-  out.precision(2);
-  out << std::scientific;
-  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? " " : "") << values[i];
-  return out.str();
-}
-
-}  // namespace
-
 ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
                              const FemParameters& parameters)
     : pattern_(pattern), problem_(problem), parameters_(parameters) {
@@ -40,7 +28,7 @@ ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
 }
 
 void ContactRounds::start_from(const DofVector& x) {
-  n_history_ = 0;
+  secant_.forget();
   friction_force_N_.assign(pattern_.n_owned_nodes(), Vec3::Zero());
   n_slipping_ = 0;
   std::vector<Vec3> nodes(pattern_.n_owned_nodes());
@@ -73,18 +61,14 @@ void ContactRounds::commit_friction(const DofVector& x) {
 }
 
 void ContactRounds::secant_predictor(const LoadStep& step, DofVector& x) {
-  if (n_history_ < 2) return;
-  const double ratio = (step.alpha - history_alpha_[0]) / (history_alpha_[0] - history_alpha_[1]);
-  // Only forward steps no longer than a few of the last: further out the secant misleads.
-  if (!std::isfinite(ratio) || ratio <= 0.0 || ratio > 4.0) return;
-  x = history_x_[0];
-  x.add(ratio, history_x_[0], -ratio, history_x_[1]);
+  const double ratio = secant_.ratio(step.alpha);
+  if (ratio == 0.0) return;
+  const int last = secant_.newest(), before = 1 - last;
+  x = history_x_[last];
+  x.add(ratio, history_x_[last], -ratio, history_x_[before]);
   x.update_ghost_values();
-  std::vector<double>& multiplier = nodes_.multiplier_N;
-  for (std::size_t w = 0; w < multiplier.size(); ++w)
-    multiplier[w] =
-        std::max(0.0, history_multiplier_N_[0][w] +
-                          ratio * (history_multiplier_N_[0][w] - history_multiplier_N_[1][w]));
+  AlphaSecant::extrapolate_multipliers(ratio, history_multiplier_N_[last],
+                                       history_multiplier_N_[before], nodes_.multiplier_N);
   // No constraints.distribute(x): the pins and held ends constrain increments, and the
   // secant of two states that satisfy them (and the seams) satisfies them already.
 }
@@ -104,27 +88,28 @@ void ContactRounds::contact_predictor(DofVector& x) const {
   pattern_.copy_seams(x);
 }
 
-int ContactRounds::update_multipliers(const DofVector& x) {
+double ContactRounds::update_multipliers(const DofVector& x, int* n_active) {
   max_penetration_m_ = 0.0;
-  int n_active = 0;
+  int active = 0;
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
     const SurfacePoint s =
         nodes_.query(*problem_.body, k, pattern_.node_position(x, pattern_.owned_nodes[k]));
     nodes_.multiplier_N[k] = contact_multiplier_N(nodes_.multiplier_N[k], nodes_.penalty_N_per_m[k],
                                                   s.signed_distance_m);
     if (nodes_.multiplier_N[k] > 0.0) {
-      ++n_active;
+      ++active;
       max_penetration_m_ = std::max(max_penetration_m_, std::abs(s.signed_distance_m));
     }
   }
   // Every rank ends the rounds alike.
   max_penetration_m_ = dealii::Utilities::MPI::max(max_penetration_m_, pattern_.comm);
-  return dealii::Utilities::MPI::sum(n_active, pattern_.comm);
+  *n_active = dealii::Utilities::MPI::sum(active, pattern_.comm);
+  return max_penetration_m_;
 }
 
-ContactRoundsResult ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
-                                         const NewtonSolver::Assembler& assemble,
-                                         NewtonSystem& system, DofVector& x, NewtonLog& log) {
+void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
+                          const NewtonSolver::Assembler& assemble, NewtonSystem& system,
+                          DofVector& x, NewtonLog& log, StepReport& report) {
   // After a fallback, the solver asked for returns once the garment presses on the body: the
   // loose garment's tangent (singular at zero tension) is what defeats CG, and the first
   // contact step, where the tension starts from zero, is left to the solver that got there.
@@ -133,59 +118,56 @@ ContactRoundsResult ContactRounds::solve(const LoadStep& step, NewtonSolver& new
   contact_predictor(x);
   newton.start_step();
 
-  ContactRoundsResult result;
-  bool gap_closed = false;
-  // One line per round for the message of a step whose gap does not close.
-  std::string history =
-      "rounds (round, Newton iterations, first / last residual N, largest penetration m after "
-      "the update, nodes in contact):";
-  for (int round = 0; round < parameters_.max_augmented_lagrangian_iterations; ++round) {
+  // The rounds of core/load_step.h. The reported contact force is the multiplier itself, the
+  // force the state just solved is in equilibrium with once updated: no settle after the last
+  // update.
+  MultiplierRounds rounds;
+  rounds.settle = [&] {
     const std::size_t first = log.residual_N.size();
-    const int iterations = newton.solve(step, assemble, system, x, log);
-    result.newton_iterations += iterations;
-    result.n_active = update_multipliers(x);
-    std::ostringstream gap;
-    gap.precision(2);
-    gap << std::scientific << "; gap " << max_penetration_m_ << " m, " << result.n_active
-        << " in contact";
-    result.rounds.push_back(format_residuals(std::vector<double>(log.residual_N.begin() + first,
-                                                                 log.residual_N.end())) +
-                            gap.str());
-    std::ostringstream summary;
-    summary.precision(2);
-    summary << std::scientific << "\n  " << round << "  " << iterations << "  "
-            << log.residual_N[first] << " / " << log.residual_N.back() << "  " << max_penetration_m_
-            << "  " << result.n_active;
-    history += summary.str();
-    if (max_penetration_m_ <= parameters_.gap_tolerance_m) {
-      gap_closed = true;
-      break;
-    }
-  }
+    MultiplierRound round;
+    round.iterations = newton.solve(step, assemble, system, x, log);
+    round.residual_N.assign(log.residual_N.begin() + first, log.residual_N.end());
+    return round;
+  };
+  rounds.read_gap = [&](bool, int* count) { return update_multipliers(x, count); };
+  rounds.max_updates = parameters_.max_augmented_lagrangian_iterations;
+  rounds.gap_tolerance_m = parameters_.stop.gap_tolerance_m;
+  rounds.settle_after_last_update = false;
+  const bool closed = rounds.run(report);
+  report.iterations = 0;
+  for (const MultiplierRound& round : report.rounds) report.iterations += round.iterations;
   const double residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  if (!gap_closed) {
+  if (!closed) {
+    // One line per round (Newton iterations, first / last residual N, largest penetration m
+    // after the update, nodes in contact).
+    std::ostringstream history;
+    history.precision(2);
+    history << std::scientific
+            << "rounds (round, Newton iterations, first / last residual N, largest penetration m "
+               "after the update, nodes in contact):";
+    for (std::size_t r = 0; r < report.rounds.size(); ++r) {
+      const MultiplierRound& round = report.rounds[r];
+      history << "\n  " << r << "  " << round.iterations << "  " << round.residual_N.front()
+              << " / " << round.residual_N.back() << "  " << round.penetration_m << "  "
+              << round.n_in_contact;
+    }
     std::ostringstream what;
     what << "the contact gap did not close (largest penetration " << max_penetration_m_
-         << " m, tolerance " << parameters_.gap_tolerance_m << " m) after "
+         << " m, Solver/Gap tolerance " << parameters_.stop.gap_tolerance_m << " m) after "
          << parameters_.max_augmented_lagrangian_iterations << " augmented-Lagrangian updates";
-    throw_step_failure(step, what.str(), residual_N, newton.tolerance_N(), history);
+    throw_step_failure(StopReason::gap_not_closed, step, what.str(), residual_N,
+                       newton.tolerance_N(), history.str());
   }
-  if (had_contact_ && result.n_active == 0)
-    throw_step_failure(step, "contact lost", residual_N, newton.tolerance_N());
+  if (had_contact_ && report.n_in_contact == 0)
+    throw_step_failure(StopReason::contact_lost, step, "contact lost", residual_N,
+                       newton.tolerance_N());
   commit_friction(x);
-  had_contact_ = had_contact_ || result.n_active > 0;
-  if (result.n_active == 0) {
-    n_history_ = 0;
-  } else {
-    history_alpha_[1] = history_alpha_[0];
-    history_x_[1].swap(history_x_[0]);
-    history_multiplier_N_[1].swap(history_multiplier_N_[0]);
-    history_alpha_[0] = step.alpha;
-    history_x_[0] = x;
-    history_multiplier_N_[0] = nodes_.multiplier_N;
-    n_history_ = std::min(n_history_ + 1, 2);
+  had_contact_ = had_contact_ || report.n_in_contact > 0;
+  secant_.record(step.alpha, report.n_in_contact > 0);
+  if (report.n_in_contact > 0) {
+    history_x_[secant_.newest()] = x;
+    history_multiplier_N_[secant_.newest()] = nodes_.multiplier_N;
   }
-  return result;
 }
 
 }  // namespace tightfit

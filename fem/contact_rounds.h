@@ -9,6 +9,7 @@
 // the nodes inside the body moved onto its surface.
 #pragma once
 
+#include "core/load_step.h"
 #include "fem/contact_nodes.h"
 #include "fem/newton_solver.h"
 #include "fem/pattern_mesh.h"
@@ -18,13 +19,6 @@
 #include <vector>
 
 namespace tightfit {
-
-// What the rounds of one load step did.
-struct ContactRoundsResult {
-  int newton_iterations = 0;
-  std::vector<std::string> rounds;  // each round's Newton residuals, formatted
-  int n_active = 0;                 // nodes in contact at the end
-};
 
 class ContactRounds {
  public:
@@ -47,12 +41,12 @@ class ContactRounds {
   // NewtonSolver::ContactSetPredictor on these nodes (contact_set_prediction.h).
   int predict_contact_set(const DofVector& x, const DofVector* increment);
 
-  // Predicts the start from x, runs the rounds (Newton on `assemble` at fixed multipliers),
-  // and records the converged step for the next secant. Throws SolverError when the gap does
-  // not close in 'Max augmented Lagrangian iterations' rounds or contact is lost.
-  ContactRoundsResult solve(const LoadStep& step, NewtonSolver& newton,
-                            const NewtonSolver::Assembler& assemble, NewtonSystem& system,
-                            DofVector& x, NewtonLog& log);
+  // Predicts the start from x, runs the rounds (core/load_step.h: Newton on `assemble` at
+  // fixed multipliers, then the update) into `report` (rounds, iterations, gap, nodes in
+  // contact), and records the converged step for the next secant. Throws SolverError when the
+  // gap does not close in 'Maximum augmented Lagrangian iterations' updates or contact is lost.
+  void solve(const LoadStep& step, NewtonSolver& newton, const NewtonSolver::Assembler& assemble,
+             NewtonSystem& system, DofVector& x, NewtonLog& log, StepReport& report);
 
  private:
   // Secant extrapolation in alpha of the positions and multipliers of the last two converged
@@ -62,8 +56,9 @@ class ContactRounds {
   // point on its surface, keeping constrained nodes on their planes (each rank its own nodes,
   // then the seams' copies follow).
   void contact_predictor(DofVector& x) const;
-  // Uzawa's update at this rank's nodes; returns the number of nodes in contact on every rank.
-  int update_multipliers(const DofVector& x);
+  // Uzawa's update at this rank's nodes; returns the largest penetration of a node in contact
+  // over every rank, m, and counts those nodes into `n_active` (every rank's).
+  double update_multipliers(const DofVector& x, int* n_active);
   // Keeps each node's anchor of the accepted state x (after update_multipliers, whose
   // multipliers are the normal forces x was in equilibrium with) and its friction force.
   void commit_friction(const DofVector& x);
@@ -74,9 +69,9 @@ class ContactRounds {
   ContactNodes nodes_;
   double max_penetration_m_ = 0.0;
   bool had_contact_ = false;
-  // The last two converged steps in contact (alpha, DoF positions, this rank's multipliers).
-  int n_history_ = 0;
-  std::array<double, 2> history_alpha_{};
+  // The last two converged steps in contact (DoF positions, this rank's multipliers), in the
+  // secant's order (core/load_step.h).
+  AlphaSecant secant_;
   std::array<DofVector, 2> history_x_;
   std::array<std::vector<double>, 2> history_multiplier_N_;
   std::vector<Vec3> friction_force_N_;

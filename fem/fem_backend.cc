@@ -20,7 +20,6 @@
 
 #include <chrono>
 #include <ctime>
-#include <sstream>
 
 namespace tightfit {
 
@@ -139,14 +138,17 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   // This rank's CPU time too: on a shared machine the wall time says little.
   const std::clock_t cpu_start = std::clock();
   StepReport report;
+  report.backend = "fem";
+  report.step_index = step.index;
+  report.alpha = step.alpha;
   report.tolerance_N = newton_.tolerance_N();
+  report.stop_norm = parameters_.stop.norm;
   NewtonLog& log = log_ = NewtonLog{};
   const NewtonSolver::Assembler assemble = [this, &step](const DofVector& x, bool with_tangent) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
                        step.gravity_on, system_);
   };
-  const ContactRoundsResult rounds = contact_.solve(step, newton_, assemble, system_, x_, log);
-  report.iterations = rounds.newton_iterations;
+  contact_.solve(step, newton_, assemble, system_, x_, log, report);
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
   output_ = OwnedSurfaceOutput(
       pattern_, surface_output(pattern_, assembly_, *problem_.body, x_,
@@ -154,29 +156,22 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
                                step.gravity_on ? assembly_.gravity_load_N() : std::vector<Vec3>{},
                                pattern_.gather_nodes(contact_.friction_force_N())));
 
-  std::ostringstream detail;
-  detail << "newton " << report.iterations << " in " << rounds.rounds.size()
-         << " AL rounds, |R|_max N: ";
-  for (std::size_t r = 0; r < rounds.rounds.size(); ++r)
-    detail << (r ? " | " : "") << "[" << rounds.rounds[r] << "]";
-  detail << "; krylov (" << to_string(newton_.linear_solver().kind()) << "):";
-  for (int k : log.krylov_iterations) detail << " " << k;
-  if (!log.notes.empty()) detail << " [" << log.notes << "]";
-  if (log.n_shifted_solves > 0) detail << "; " << log.n_shifted_solves << " shifted tangents";
-  if (log.n_set_predictions > 0)
-    detail << "; " << log.n_set_predictions << " solves on a predicted contact set";
-  detail << "; stop rule " << report.tolerance_N << " N"
-         << (parameters_.stop_on_rms ? " (rms)" : "") << "; max gap "
-         << contact_.max_penetration_m() << " m; " << rounds.n_active << " in contact";
-  if (contact_.nodes().friction.active()) detail << ", " << contact_.n_slipping() << " slipping";
+  report.has_newton = true;
+  NewtonReport& newton = report.newton;
+  newton.linear_solver = to_string(newton_.linear_solver().kind());
+  newton.krylov_iterations = log.krylov_iterations;
+  newton.linear_solver_notes = log.notes;
+  newton.linear_solver_switched = !log.notes.empty();
+  newton.n_shifted_solves = log.n_shifted_solves;
+  newton.n_set_predictions = log.n_set_predictions;
+  newton.n_failed_line_searches = log.n_failed_line_searches;
+  if (contact_.nodes().friction.active()) report.n_slipping = contact_.n_slipping();
   if (parameters_.element_degree != 1)
-    detail << "; vertex forces are the recovered traction (degree " << parameters_.element_degree
-           << ")";
+    report.note = "vertex forces are the recovered traction (degree " +
+                  std::to_string(parameters_.element_degree) + ")";
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  detail << "; " << report.wall_seconds << " s ("
-         << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
-  report.detail = detail.str();
+  report.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return report;
 }
 

@@ -14,7 +14,7 @@
 //   internal_force_N = -(t A_v) n_v,
 // A_v its flat barycentric area and n_v the extractor's vertex normal: the extractor's
 // pressure at the vertex is t, its mean is exact under a uniform pressure, and
-// contact_traction_Pa() equals it. StepReport::detail says so.
+// contact_traction_Pa() equals it. StepReport::text() says so.
 #pragma once
 
 #include "core/backend.h"

@@ -8,6 +8,7 @@ namespace tightfit {
 BackendEntry fem_backend_entry() {
   BackendEntry entry;
   entry.name = "fem";
+  entry.subsection = "Finite elements";
   entry.applies_friction = true;
   entry.description =
       "Finite-element membrane (deal.II + PETSc): Newton's method on the static equilibrium, "
@@ -16,10 +17,12 @@ BackendEntry fem_backend_entry() {
   entry.declare_parameters = [](dealii::ParameterHandler& prm) {
     FemParameters::declare_parameters(prm);
   };
-  entry.create = [](const Problem& problem,
+  entry.create = [](const Problem& problem, const StopRule& stop,
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
+    stop.validate(true);
     FemParameters parameters;
     parameters.parse_parameters(prm);
+    parameters.stop = stop;
     return std::make_unique<FemBackend>(problem, parameters);
   };
   return entry;

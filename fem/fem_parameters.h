@@ -1,6 +1,8 @@
 // Parameters of the finite-element membrane backend: the "Finite elements" subsection.
 #pragma once
 
+#include "core/load_step.h"
+
 #include <string>
 
 namespace dealii {
@@ -47,17 +49,17 @@ struct FemParameters {
   // Newton forcing term (newton_solver.cc).
   double linear_tolerance = 1e-10;
   int max_linear_iterations = 1000;
-  // Newton stops when the largest residual force on a free degree of freedom is below
-  // residual_tolerance * Y * h_k (Y the law's stiffness scale, N/m; h_k the rest edge length of
-  // the degree of freedom's node, m: fem/contact_nodes.h).
+  // The FE backend's own stop rule (0: off): the residual force on a free degree of freedom
+  // (stop.norm) below residual_tolerance * Y * h_k (Y the law's stiffness scale, N/m; h_k the
+  // rest edge length of the degree of freedom's node, m: fem/contact_nodes.h).
   double residual_tolerance = 1e-10;
-  // When > 0, the stop rule of the mass-spring backend instead (its 'Relative tolerance'):
-  // Newton stops when the residual (stop_norm) is below relative_tolerance * Y h^2 / L, the
-  // tension scale (h the mean rest edge, L the square root of the garment's rest area).
-  double relative_tolerance = 0.0;
-  // Which size of the residual field the stop rule reads: its largest component, or the root
-  // mean square of the nodes' residual vectors (both weighted by h / h_k, newton_solver.h).
-  bool stop_on_rms = false;
+  // The shared stop rule and gap tolerance (the case file's Solver entries, core/load_step.h):
+  // the residual (stop.norm: its largest component, or the root mean square of the nodes'
+  // residual vectors, both weighted by h / h_k, newton_solver.h) below stop.relative_tolerance
+  // times Y h^2 / L, the tension scale (0: off). Newton stops when both rules that are on hold.
+  // Here, for programs that build the backend themselves, the shared rule off and a gap of
+  // 1e-9 m; a case file's defaults are the Solver subsection's (1e-4 and 1e-8 m).
+  StopRule stop{0.0, StopNorm::largest, 1e-9};
   int max_newton_iterations = 40;
   bool line_search = true;
   int max_line_search_halvings = 10;
@@ -67,8 +69,6 @@ struct FemParameters {
   // Penalty k_k = beta * Y / h_k^2 (Pa/m) of the augmented-Lagrangian contact at node k.
   double penalty_factor = 100.0;
   int max_augmented_lagrangian_iterations = 20;
-  // Largest penetration accepted at a vertex in contact, m.
-  double gap_tolerance_m = 1e-9;
   // Added to the tangent's diagonal (N/m) to remove rigid motions of bodies that do not
   // pin them; changes the path, never the converged state (the residual is untouched).
   double tangent_shift_N_per_m = 0.0;
@@ -81,7 +81,8 @@ struct FemParameters {
   double compression_stiffness_fraction = 1e-2;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
-  // Reads the subsection; throws std::invalid_argument naming the entry on a bad value.
+  // Reads the subsection (not `stop`: the caller sets it from the Solver one); throws
+  // std::invalid_argument naming the entry on a bad value.
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 

@@ -2,6 +2,7 @@
 
 #include "contact/residual_location.h"
 #include "core/interruption.h"
+#include "core/load_step.h"
 #include "core/residual_history.h"
 
 #include <petscmat.h>
@@ -14,14 +15,34 @@
 
 namespace tightfit {
 
-void throw_step_failure(const LoadStep& step, const std::string& what, double residual_N,
-                        double tolerance_N, const std::string& details) {
+void throw_step_failure(StopReason reason, const LoadStep& step, const std::string& what,
+                        double residual_N, double tolerance_N, const std::string& details) {
   std::ostringstream out;
   out << "fem backend, load step " << step.index << " (alpha " << step.alpha << "): " << what
       << "; residual " << residual_N << " N (tolerance " << tolerance_N << " N)";
   if (!details.empty()) out << "; " << details;
-  throw SolverError(out.str());
+  throw SolverError(reason, out.str());
 }
+
+namespace {
+
+// Both rules that are on (above 0) hold: the shared one, relative to the tension scale, and
+// the FE backend's own, relative to Y h.
+double stop_threshold_N(const FemParameters& parameters, double stiffness_force_N,
+                        double tension_scale_N) {
+  double threshold_N = std::numeric_limits<double>::infinity();
+  if (parameters.stop.relative_tolerance > 0.0)
+    threshold_N = parameters.stop.relative_tolerance * tension_scale_N;
+  if (parameters.residual_tolerance > 0.0)
+    threshold_N = std::min(threshold_N, parameters.residual_tolerance * stiffness_force_N);
+  if (!std::isfinite(threshold_N))
+    throw std::invalid_argument(
+        "Solver/Relative tolerance and Finite elements/Residual tolerance are both 0: the FE "
+        "backend needs a stop rule (set either above 0)");
+  return threshold_N;
+}
+
+}  // namespace
 
 NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
                            double stiffness_scale_N_per_m, double tension_scale_N,
@@ -29,10 +50,8 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
     : pattern_(pattern),
       parameters_(parameters),
       stiffness_scale_N_per_m_(stiffness_scale_N_per_m),
-      tolerance_N_(parameters.relative_tolerance > 0.0
-                       ? parameters.relative_tolerance * tension_scale_N
-                       : parameters.residual_tolerance * stiffness_scale_N_per_m *
-                             pattern.mean_edge_m),
+      tolerance_N_(stop_threshold_N(parameters, stiffness_scale_N_per_m * pattern.mean_edge_m,
+                                    tension_scale_N)),
       body_(body),
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
@@ -47,19 +66,17 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
 }
 
 double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
-  double largest = 0.0, sum_squared = 0.0;
+  ResidualSize size;
   std::size_t k = 0;  // i's position among the owned DoFs (the range visits them in order)
-  for (const GlobalDof i : pattern_.owned_dofs) {
-    const double r = std::abs(system.rhs(i)) * dof_weight_[k++];
-    largest = std::max(largest, r);
-    sum_squared += r * r;  // std::max drops NaN; the sum keeps it
-  }
+  for (const GlobalDof i : pattern_.owned_dofs)
+    size.add(std::abs(system.rhs(i)) * dof_weight_[k++]);
   // A node's residual vector lies on its free DoFs (a seam's other copies and a held
   // direction's DoF carry none): the sum over DoFs is the sum of |R_k|^2 over the nodes.
-  sum_squared = dealii::Utilities::MPI::sum(sum_squared, comm_);
-  if (!std::isfinite(sum_squared)) return std::numeric_limits<double>::quiet_NaN();
-  if (parameters_.stop_on_rms) return std::sqrt(sum_squared / pattern_.n_nodes());
-  return dealii::Utilities::MPI::max(largest, comm_);
+  const double sum_squared = dealii::Utilities::MPI::sum(size.sum_squared(), comm_);
+  const double largest_N = parameters_.stop.norm == StopNorm::largest
+                               ? dealii::Utilities::MPI::max(size.largest_N(), comm_)
+                               : 0.0;
+  return ResidualSize::read(parameters_.stop.norm, largest_N, sum_squared, pattern_.n_nodes());
 }
 
 std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofVector& x_owned,
@@ -88,9 +105,9 @@ std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofV
          "then edge midpoints); " + history.text();
 }
 
-void NewtonSolver::fail(const LoadStep& step, const std::string& what, double residual_N,
-                        const std::string& details) const {
-  throw_step_failure(step, what, residual_N, tolerance_N(), details);
+void NewtonSolver::fail(StopReason reason, const LoadStep& step, const std::string& what,
+                        double residual_N, const std::string& details) const {
+  throw_step_failure(reason, step, what, residual_N, tolerance_N(), details);
 }
 
 int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
@@ -110,7 +127,7 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
     log.notes += result.note;
     return result.used == LinearSolverKind::direct ? 0 : result.iterations;
   } catch (const std::exception& e) {
-    fail(step,
+    fail(StopReason::linear_solver_failed, step,
          std::string("linear solver '") + to_string(parameters_.linear_solver) +
              "' failed: " + e.what(),
          system.rhs.linfty_norm(), failure_details(system, x, log));
@@ -144,7 +161,8 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
   for (int iteration = 0;; ++iteration) {
     const double residual_N = scaled_residual_N(system);
     history_N.push_back(residual_N);
-    if (!std::isfinite(residual_N)) fail(step, "the residual is not finite", residual_N);
+    if (!std::isfinite(residual_N))
+      fail(StopReason::not_finite, step, "the residual is not finite", residual_N);
     if (residual_N <= tolerance) return iteration;
     // Collective, so that every rank stops at the same iteration whichever got the signal.
     throw_if_interrupted(dealii::Utilities::MPI::max(interruption_signal(), comm_),
@@ -162,7 +180,8 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
                             ? std::clamp(0.9 * ratio * ratio, parameters_.linear_tolerance, 1e-2)
                             : parameters_.linear_tolerance;
     if (iteration >= parameters_.max_newton_iterations)
-      fail(step, "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
+      fail(StopReason::iteration_limit, step,
+           "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
            residual_N, failure_details(system, x, log));
     const double norm_0 = system.rhs.l2_norm();
     // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
@@ -177,18 +196,21 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // x, with the same shift, before the shift grows: the prediction is the linearised step's,
     // and a step that ends far from it (a facet crossed, a turned normal) may not descend.
     bool predict = static_cast<bool>(predictor_), predicted = false, reassemble = false;
-    for (int escalation = 0;; ++escalation) {
+    // How often the shift has grown in this iteration (after a failed solve or line search).
+    int escalations = 0;
+    bool accepted = false;
+    for (;;) {
       // Yamashita and Fukushima's mu ~ |R|: it damps the step where the residual is large and
       // vanishes with it, so that convergence stays quadratic, even when the tangent is
       // singular at the solution (a tube touching the body at zero tension).
       const double shift_N_per_m =
           std::max(shift_N_per_m_, parameters_.residual_shift_factor * residual_N / mean_edge_m);
       try {
-        // At escalation 0 the tangent and residual at x are assembled already; later, the
-        // tangent is assembled afresh. Either way it is shifted in place (same pattern: the
+        // Before any escalation the tangent and residual at x are assembled already; later,
+        // the tangent is assembled afresh. Either way it is shifted in place (same pattern: the
         // factorization's analysis is kept).
-        if (escalation > 0 || reassemble) assemble(x, true);
-        if (escalation > 0 || reassemble || shift_N_per_m > 0.0)
+        if (escalations > 0 || reassemble) assemble(x, true);
+        if (escalations > 0 || reassemble || shift_N_per_m > 0.0)
           MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
         log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
         ghosted_increment(system, increment);
@@ -214,11 +236,12 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         // A singular tangent the residual's shift is too small to lift (a loose, stress-free
         // garment whose midpoint nodes have no stiffness across it): shift as after a failed
         // line search.
-        if (escalation >= 8) throw;
+        if (escalations >= 8) throw;
         linear_solver_->reset();  // a failed factorization is not reused
         shift_N_per_m_ =
             shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_;
         ++log.n_shifted_solves;
+        ++escalations;
         continue;
       }
       // A step longer than half an edge leaves the region where the linearisation holds (and
@@ -226,7 +249,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       // it.
       step_taken = std::min(1.0, 0.5 * mean_edge_m / increment.linfty_norm());
       double& s = step_taken;  // halved by the line search
-      bool accepted = !parameters_.line_search;
+      accepted = !parameters_.line_search;
       for (int halving = 0; parameters_.line_search; ++halving) {
         trial = x;
         trial.add(s, increment);
@@ -248,17 +271,22 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
             shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m_ ? 0.1 * shift_N_per_m_ : 0;
         break;
       }
+      // A step on the predicted set that did not descend: solved again on the set at x, with
+      // the same shift (not an escalation).
       if (predicted) {
         predict = false;
         reassemble = true;
-        --escalation;
         continue;
       }
-      if (escalation >= 8) break;  // take the shortest step tried; the iteration limit judges
+      if (escalations >= 8) break;
       shift_N_per_m_ =
           shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_;
       ++log.n_shifted_solves;
+      ++escalations;
     }
+    // Every shift refused: the shortest step tried is taken, and counted as a failed line
+    // search (StepReport's newton.n_failed_line_searches); the iteration limit judges.
+    if (!accepted) ++log.n_failed_line_searches;
     x = trial;
     log.step_length.push_back(step_taken);
     if (!tangent_current) assemble(x, true);

@@ -20,8 +20,8 @@ namespace tightfit {
 
 // Throws SolverError naming the step (index, alpha), what failed and the residual, then
 // `details` (where the residual sits, its history) when not empty.
-[[noreturn]] void throw_step_failure(const LoadStep& step, const std::string& what,
-                                     double residual_N, double tolerance_N,
+[[noreturn]] void throw_step_failure(StopReason reason, const LoadStep& step,
+                                     const std::string& what, double residual_N, double tolerance_N,
                                      const std::string& details = "");
 
 // What a load step's Newton solves did, for its report.
@@ -32,6 +32,7 @@ struct NewtonLog {
   std::string notes;                   // linear solver switches
   int n_shifted_solves = 0;            // tangents shifted after failed line searches
   int n_set_predictions = 0;           // systems solved again on a predicted contact set
+  int n_failed_line_searches = 0;      // iterations whose every shift failed the line search
 };
 
 class NewtonSolver {
@@ -84,8 +85,8 @@ class NewtonSolver {
                           NewtonLog& log);
   // The increment on this rank's DoFs and ghosts, constraints distributed.
   void ghosted_increment(NewtonSystem& system, DofVector& increment) const;
-  [[noreturn]] void fail(const LoadStep& step, const std::string& what, double residual_N,
-                         const std::string& details = "") const;
+  [[noreturn]] void fail(StopReason reason, const LoadStep& step, const std::string& what,
+                         double residual_N, const std::string& details = "") const;
 
   const PatternMesh& pattern_;
   FemParameters parameters_;

@@ -104,7 +104,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
   const double runaway_m = 10.0 * open.size_m();
   const double damping = open.damping_per_s();
   double dt = 0.0;
-  auto fail = [&](const std::string& what) {
+  auto fail = [&](StopReason reason, const std::string& what) {
     const auto [a, b] = open.widest_seam_pair();
     std::ostringstream message;
     message << "dressing: " << what << " at frame " << result.frames << " (body scale "
@@ -113,7 +113,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     if (a >= 0)
       message << ", on seam " << seam_joining(garment, welded, a, b) << " between " << where(x[a])
               << " and " << where(x[b]);
-    return SolverError(message.str());
+    return SolverError(reason, message.str());
   };
 
   // How far the body's surface can move as its scale changes by ds: ds times the farthest
@@ -150,18 +150,21 @@ DressingResult dress(const Problem& problem, const Garment& garment,
           << std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count()
           << " s" << std::endl;
     if (!std::isfinite(result.largest_seam_gap_m))
-      throw fail("diverged (non-finite position; try a smaller Mass spring/Time step)");
+      throw fail(StopReason::not_finite,
+                 "diverged (non-finite position; try a smaller Mass spring/Time step)");
     const bool whole = result.frames >= std::max(settings.growth_frames, settings.seam_ramp_frames);
     if (whole && result.largest_seam_gap_m < result.closed_below_m) break;
     if (result.frames >= settings.maximum_frames)
-      throw fail("the seams did not close within " + std::to_string(settings.maximum_frames) +
-                 " frames");
+      throw fail(
+          StopReason::seams_not_closed,
+          "the seams did not close within " + std::to_string(settings.maximum_frames) + " frames");
     throw_if_interrupted(interruption_signal(),
                          "during the dressing at frame " + std::to_string(result.frames));
     if (result.frames % 64 == 0)
       for (std::size_t u = 0; u < x.size(); ++u)
         if (!((x[u] - start_m[u]).norm() < runaway_m))
-          throw fail("diverged (panel vertex " + std::to_string(u) + " ran away)");
+          throw fail(StopReason::ran_away,
+                     "diverged (panel vertex " + std::to_string(u) + " ran away)");
   }
 
   // Welded; every vertex must lie outside the whole body. The penalty leaves vertices in
@@ -177,7 +180,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
             << " (more than " << allowed_m
             << " m: the garment passed into the body; grow it more slowly with more "
                "growth frames, or start it further out)";
-    throw SolverError(message.str());
+    throw SolverError(StopReason::passed_into_body, message.str());
   }
   result.deepest_m = back.deepest_m;
   result.vertices_put_back = back.points_moved;

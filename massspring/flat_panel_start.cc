@@ -58,19 +58,20 @@ FlatPanelResult FlatPanelStart::run(const LoadStep& step) {
   result.closed_below_m = closed_fraction * garment_.mean_edge_m();
   double dt = 0.0;
 
-  auto fail = [&](const std::string& what) {
+  auto fail = [&](StopReason reason, const std::string& what) {
     std::ostringstream message;
     message << "mass spring: load step " << step.index << " (alpha " << step.alpha
             << ") flat-panel start (Placement = flat panels): " << what << " at frame "
             << result.frames << " (largest seam gap " << result.largest_seam_gap_m
             << " m, closed below " << result.closed_below_m << " m, time step " << dt << " s)";
-    return SolverError(message.str());
+    return SolverError(reason, message.str());
   };
 
   result.largest_seam_gap_m = garment_.largest_seam_gap_m();
   while (!(result.largest_seam_gap_m < result.closed_below_m)) {
     if (result.frames >= parameters_.maximum_frames)
-      throw fail("the seams did not close within Mass spring/Maximum frames");
+      throw fail(StopReason::seams_not_closed,
+                 "the seams did not close within Mass spring/Maximum frames");
     throw_if_interrupted(interruption_signal(), "during the flat-panel start of load step " +
                                                     std::to_string(step.index) + " at frame " +
                                                     std::to_string(result.frames));
@@ -84,10 +85,12 @@ FlatPanelResult FlatPanelStart::run(const LoadStep& step) {
     ++result.frames;
     result.largest_seam_gap_m = garment_.largest_seam_gap_m();
     if (!std::isfinite(result.largest_seam_gap_m))
-      throw fail("diverged (non-finite position; try a smaller Mass spring/Time step)");
+      throw fail(StopReason::not_finite,
+                 "diverged (non-finite position; try a smaller Mass spring/Time step)");
     for (std::size_t i = 0; i < x.size(); ++i)
       if (!((x[i] - start_x[i]).norm() < runaway_m))
-        throw fail("diverged (panel vertex " + std::to_string(i) + " ran away)");
+        throw fail(StopReason::ran_away,
+                   "diverged (panel vertex " + std::to_string(i) + " ran away)");
   }
   result.welded_positions_m = weld_positions(*problem_.mesh, x);
   result.wall_seconds =

@@ -6,6 +6,7 @@
 #include "contact/residual_location.h"
 #include "contact/rigid_body.h"
 #include "core/residual_history.h"
+#include "core/step_report.h"
 #include "core/tension_scale.h"
 #include "massspring/flat_panel_start.h"
 #include "massspring/lumped_mass.h"
@@ -54,7 +55,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   size_m_ = std::sqrt(rest_area(mesh));
   // Stop rule: a force relative to the tension scale Y h^2 / L (core/garment.h says why).
   tolerance_N_ =
-      parameters_.relative_tolerance * tension_scale_N(mesh, problem_.law->stiffness_scale());
+      parameters_.stop.relative_tolerance * tension_scale_N(mesh, problem_.law->stiffness_scale());
   // Standard gravity, so the limit is the same with gravity on or off.
   const double weight_N = std::accumulate(mass_kg_.begin(), mass_kg_.end(), 0.0) * 9.80665;
   net_force_limit_N_ = parameters_.net_force_tolerance * weight_N;
@@ -92,22 +93,26 @@ void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
                                 std::to_string(problem_.mesh->n_vertices) + " vertices");
   x_ = positions_m;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
-  last_ = before_last_ = Settled{};
+  secant_.forget();
   // A garment placed anew sticks where it first touches: its anchors are its closest points.
   if (problem_.body) friction_.place(*problem_.body, x_);
 }
 
 void MassSpringBackend::predict(double alpha) {
-  const double span = last_.alpha - before_last_.alpha;
-  if (!std::isfinite(span) || span == 0.0 || alpha == last_.alpha) return;
-  // Linear in alpha through the last two stable states: the FE backend's predictor.
-  const double ratio = (alpha - last_.alpha) / span;
-  for (std::size_t i = 0; i < x_.size(); ++i) {
-    x_[i] = last_.x[i] + ratio * (last_.x[i] - before_last_.x[i]);
-    multiplier_N_[i] =
-        std::max(0.0, last_.multiplier_N[i] +
-                          ratio * (last_.multiplier_N[i] - before_last_.multiplier_N[i]));
-  }
+  const double ratio = secant_.ratio(alpha);
+  if (ratio == 0.0) return;
+  const int last = secant_.newest(), before = 1 - last;
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    x_[i] = settled_x_[last][i] + ratio * (settled_x_[last][i] - settled_x_[before][i]);
+  AlphaSecant::extrapolate_multipliers(ratio, settled_multiplier_N_[last],
+                                       settled_multiplier_N_[before], multiplier_N_);
+}
+
+void MassSpringBackend::record_settled(double alpha, bool in_contact) {
+  secant_.record(alpha, in_contact);
+  if (!in_contact) return;
+  settled_x_[secant_.newest()] = x_;
+  settled_multiplier_N_[secant_.newest()] = multiplier_N_;
 }
 
 Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slipping) const {
@@ -177,7 +182,7 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     net_N += force[i];
   }
   if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
-  const double norm_N = parameters_.stop_norm == StopNorm::rms
+  const double norm_N = parameters_.stop.norm == StopNorm::rms
                             ? std::sqrt(total_squared / double(n))
                             : std::sqrt(largest_squared);
   if (!(net_force_limit_N_ > 0)) return norm_N;
@@ -279,8 +284,9 @@ double MassSpringBackend::choose_time_step_s() const {
       damper_time_step_s(contact_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety));
 }
 
-double MassSpringBackend::contact_penetration_m(bool update_multipliers) {
+double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in_contact) {
   double penetration_m = 0.0;
+  if (in_contact) *in_contact = 0;
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
   if (!body || !(k > 0)) return penetration_m;
@@ -289,221 +295,248 @@ double MassSpringBackend::contact_penetration_m(bool update_multipliers) {
     const double lambda_N =
         contact_multiplier_N(multiplier_N_[i], k * rest_vertex_area_m2_[i], gap_m);
     if (update_multipliers) multiplier_N_[i] = lambda_N;
-    if (lambda_N > 0.0) penetration_m = std::max(penetration_m, -gap_m);
+    if (lambda_N > 0.0) {
+      penetration_m = std::max(penetration_m, -gap_m);
+      if (in_contact) ++*in_contact;
+    }
   }
   return penetration_m;
 }
 
-StepReport MassSpringBackend::solve(const LoadStep& step) {
-  const auto start = std::chrono::steady_clock::now();
+// What the settles of one load step share: the frames are counted over the step (the frame
+// limit is the step's), the time step keeps its halvings, the slide ends once.
+struct MassSpringBackend::StepRun {
+  StepRun(const MassSpringParameters& p)
+      : history(p.stall_window_frames, p.stall_fall),
+        sliding(p.integrator == Integrator::rk4 && p.slide_damping_per_s > 0) {}
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   // The process's CPU time too: on a shared machine the wall time says little.
-  const std::clock_t cpu_start = std::clock();
-  friction_committed_ = false;
-  std::string flat_start_detail;
-  int flat_start_frames = 0;
-  if (flat_start_) {
-    // The paper's start (Section 4.3): the panels close their seams round the cylinder, then
-    // the welded garment settles below. Replaces whatever set_positions gave.
-    const FlatPanelResult flat = flat_start_->run(step);
-    flat_start_.reset();
-    x_ = flat.welded_positions_m;
-    flat_start_frames = flat.frames;
-    std::ostringstream detail;
-    detail << "flat-panel start: seams closed (largest gap " << flat.largest_seam_gap_m << " m < "
-           << flat.closed_below_m << " m) after " << flat.frames << " frames, " << flat.wall_seconds
-           << " s; then ";
-    flat_start_detail = detail.str();
-    if (problem_.body) friction_.place(*problem_.body, x_);
+  std::clock_t cpu_start = std::clock();
+  LoadStep step;
+  std::vector<Vec3> start_x;
+  double runaway_m = 0.0;  // particles further than this from start_x have diverged
+  int frame = 0, halvings = 0;
+  double residual_N = 0.0;
+  ResidualHistory history;
+  // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
+  bool sliding;
+  int slide_frames = 0;
+  double calm_s = 0.0;
+  std::string newton_history;  // implicit: every settle's iterations
+};
+
+SolverError MassSpringBackend::step_failure(StopReason reason, const std::string& what,
+                                            bool with_history) const {
+  const StepRun& run = *run_;
+  std::ostringstream message;
+  message << "mass spring: " << step_name(run.step) << " " << what << " at frame " << run.frame
+          << " (residual " << run.residual_N << " N, tolerance " << tolerance_N_ << " N, time step "
+          << time_step_s_ << " s)";
+  if (with_history) {
+    // Where the residual sits and whether the garment as a whole is still pushed (a slide).
+    residual_forces(x_, run.step.gravity_on, force_);
+    message << "; " << text(locate_residual(x_, force_, problem_.body)) << "; "
+            << run.history.text();
   }
+  return SolverError(reason, message.str());
+}
+
+void MassSpringBackend::run_flat_start(const LoadStep& step, StepReport& report) {
+  if (!flat_start_) return;
+  // The paper's start (Section 4.3): the panels close their seams round the cylinder, then
+  // the welded garment settles below. Replaces whatever set_positions gave.
+  const FlatPanelResult flat = flat_start_->run(step);
+  flat_start_.reset();
+  x_ = flat.welded_positions_m;
+  report.has_flat_start = true;
+  report.flat_start = {flat.frames, flat.largest_seam_gap_m, flat.closed_below_m,
+                       flat.wall_seconds};
+  if (problem_.body) friction_.place(*problem_.body, x_);
+}
+
+void MassSpringBackend::prepare_step(const LoadStep& step) {
+  friction_committed_ = false;
   if (problem_.body && friction_.active() && !friction_.placed())
     friction_.place(*problem_.body, x_);
-
   // The body may have changed since the last step (a morph, a growth): nothing of its last
   // queries is known to hold.
   std::fill(clearance_m_.begin(), clearance_m_.end(), 0.0);
-  const bool implicit = parameters_.integrator == Integrator::implicit;
-  if (implicit) predict(step.alpha);
+  if (parameters_.integrator == Integrator::implicit) predict(step.alpha);
   time_step_s_ = choose_time_step_s();
   damping_per_s_ = parameters_.damping_per_s > 0
                        ? parameters_.damping_per_s
                        : critical_damping_per_s(problem_.law->stiffness_scale(),
                                                 problem_.fabric->areal_density_kg_per_m2, size_m_);
-  const std::vector<Vec3> start_x = x_;
-  // Particles that run further than this from where the step began have diverged.
-  const double runaway_m = 10.0 * size_m_;
+  run_->step = step;
+  run_->start_x = x_;
+  run_->runaway_m = 10.0 * size_m_;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
+}
 
-  ResidualHistory history(parameters_.stall_window_frames, parameters_.stall_fall);
-  // The residual history follows the message on the lines below it.
-  auto fail = [&](const std::string& what, int frame, double residual, bool with_history) {
-    std::ostringstream message;
-    message << "mass spring: " << step_name(step) << " " << what << " at frame " << frame
-            << " (residual " << residual << " N, tolerance " << tolerance_N_ << " N, time step "
-            << time_step_s_ << " s)";
-    if (with_history) {
-      // Where the residual sits and whether the garment as a whole is still pushed (a slide).
-      residual_forces(x_, step.gravity_on, force_);
-      message << "; " << text(locate_residual(x_, force_, problem_.body)) << "; " << history.text();
-    }
-    return SolverError(message.str());
-  };
+MultiplierRound MassSpringBackend::settle(const LoadStep& step) {
+  const int first_frame = run_->frame;
+  MultiplierRound round =
+      parameters_.integrator == Integrator::implicit ? settle_implicit(step) : settle_rk4(step);
+  round.iterations = run_->frame - first_frame;
+  return round;
+}
 
-  int frame = 0, halvings = 0;
-  double residual = 0.0;
-  // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
-  bool sliding = !implicit && parameters_.slide_damping_per_s > 0;
-  int slide_frames = 0;
-  double calm_s = 0.0;
-  // Damped RK4 from the current state until the stop rule holds; `frame` counts on over the
-  // settles of one step (the frame limit is the step's). A stalled window halves the time
-  // step (residual_history.h) until the halvings run out.
-  std::string newton_history;
-  // The implicit route: Newton from the current state to the same stop rule; `frame` counts
-  // its factorisations.
-  auto settle_implicit = [&]() {
-    const StaticNewton::Result r = newton_.solve(
-        x_, mass_kg_,
-        [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
-          return residual_forces(x, step.gravity_on, force);
-        },
-        [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, tolerance_N_,
-        1.0 / damping_per_s_, parameters_.maximum_newton_iterations - frame);
-    frame += r.iterations;
-    residual = r.residual_N;
-    newton_history += (newton_history.empty() ? "" : "; ") + r.history;
-    if (r.converged) return;
+// The implicit route: Newton from the current state to the same stop rule; `frame` counts its
+// factorisations.
+MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
+  StepRun& run = *run_;
+  const StaticNewton::Result r = newton_.solve(
+      x_, mass_kg_,
+      [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
+        return residual_forces(x, step.gravity_on, force);
+      },
+      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, tolerance_N_,
+      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.frame);
+  run.frame += r.iterations;
+  run.residual_N = r.residual_N;
+  run.newton_history += (run.newton_history.empty() ? "" : "; ") + r.history;
+  if (!r.converged) {
     std::ostringstream what;
-    what << "did not reach equilibrium (implicit integrator, " << frame
+    what << "did not reach equilibrium (implicit integrator, " << run.frame
          << " Newton iterations, Mass spring/Maximum Newton iterations "
-         << parameters_.maximum_newton_iterations << "); " << newton_history;
-    throw fail(what.str(), frame, residual, false);
-  };
-  auto settle = [&]() {
-    if (implicit) return settle_implicit();
-    history.restart();
-    for (;;) {
-      // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
-      const bool quasi_static = frame < parameters_.quasi_static_frames;
-      if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
-      const double c = quasi_static ? 0.0
-                       : sliding    ? parameters_.slide_damping_per_s
-                                    : damping_per_s_;
-      // While the garment slides the stop rule is not read: at the slide's lower damping a
-      // creep shows a smaller net force (massspring_parameters.h).
-      residual = rk4_frame(time_step_s_, c, step.gravity_on,
-                           sliding ? -std::numeric_limits<double>::infinity() : tolerance_N_);
-      if (!std::isfinite(residual))
-        throw fail("diverged (non-finite force; try a smaller Mass spring/Time step)", frame,
-                   residual, false);
-      if (sliding) {
-        if (!quasi_static && slide_has_ended(time_step_s_, calm_s)) {
-          sliding = false;
-          slide_frames = frame + 1;
-          history.restart();
-        }
-      } else if (residual < tolerance_N_) {
-        return;  // rk4_frame left the stable state untouched
-      } else if (history.record(frame, residual, time_step_s_)) {
-        if (halvings == parameters_.stall_halvings)
-          throw fail(
-              "stalled (the residual did not fall below Mass spring/Stall residual fall "
-              "times its earlier windows' after " +
-                  std::to_string(halvings) + " time step halvings)",
-              frame, residual, true);
-        time_step_s_ *= 0.5;
-        ++halvings;
-        history.restart();
-      }
-      ++frame;
-      if (parameters_.time_step_update_frames > 0 && parameters_.time_step_s == 0 &&
-          frame % parameters_.time_step_update_frames == 0)
-        time_step_s_ = std::ldexp(choose_time_step_s(), -halvings);
-      throw_if_interrupted(interruption_signal(),
-                           "during " + step_name(step) + " at frame " + std::to_string(frame));
-      if (frame % 64 == 0)
-        for (std::size_t i = 0; i < x_.size(); ++i)
-          if (!((x_[i] - start_x[i]).norm() < runaway_m))
-            throw fail("diverged (vertex " + std::to_string(i) + " ran away)", frame, residual,
-                       false);
-      if (frame >= parameters_.maximum_frames) {
-        residual = residual_forces(x_, step.gravity_on, force_);
-        if (!sliding && residual < tolerance_N_) return;
-        throw fail(sliding ? "was still sliding (Mass spring/Slide damping) at Mass "
-                             "spring/Maximum frames"
-                           : "did not reach equilibrium within Mass spring/Maximum frames",
-                   frame, residual, true);
-      }
-    }
-  };
-  // Uzawa's iteration on the contact multipliers (penalty_contact.h): each settled state
-  // hands its contact forces to the next settle as multipliers, until no vertex sits deeper
-  // than the gap tolerance; the state settles once more after the last update, which moves
-  // every force by kA g. The multipliers carry over to the next load step as its start.
-  const bool augmented = parameters_.contact_updates > 0;
-  int updates = 0;
+         << parameters_.maximum_newton_iterations << "); " << run.newton_history;
+    throw step_failure(
+        std::isfinite(r.residual_N) ? StopReason::iteration_limit : StopReason::not_finite,
+        what.str(), false);
+  }
+  MultiplierRound round;
+  round.residual_N = {r.residual_N};
+  return round;
+}
+
+// Damped RK4 from the current state until the stop rule holds. A stalled window halves the
+// time step (residual_history.h) until the halvings run out.
+MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
+  StepRun& run = *run_;
+  int& frame = run.frame;
+  run.history.restart();
+  MultiplierRound round;
   for (;;) {
-    settle();
-    if (!augmented) break;
-    double penetration_m = contact_penetration_m(true);
-    if (penetration_m <= parameters_.gap_tolerance_m) {
-      settle();
-      // The settle after the last update moves each vertex by up to its kA g; the stable state
-      // handed on must itself keep every vertex within the gap tolerance (a tube sliding on a
-      // cone under friction has been seen 1.6e-8 m deep there), else the updates go on.
-      penetration_m = contact_penetration_m(false);
-      if (penetration_m <= parameters_.gap_tolerance_m) break;
+    // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
+    const bool quasi_static = frame < parameters_.quasi_static_frames;
+    if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
+    const double c = quasi_static  ? 0.0
+                     : run.sliding ? parameters_.slide_damping_per_s
+                                   : damping_per_s_;
+    // While the garment slides the stop rule is not read: at the slide's lower damping a
+    // creep shows a smaller net force (massspring_parameters.h).
+    run.residual_N =
+        rk4_frame(time_step_s_, c, step.gravity_on,
+                  run.sliding ? -std::numeric_limits<double>::infinity() : tolerance_N_);
+    if (!std::isfinite(run.residual_N))
+      throw step_failure(StopReason::not_finite,
+                         "diverged (non-finite force; try a smaller Mass spring/Time step)", false);
+    if (run.sliding) {
+      if (!quasi_static && slide_has_ended(time_step_s_, run.calm_s)) {
+        run.sliding = false;
+        run.slide_frames = frame + 1;
+        run.history.restart();
+      }
+    } else if (run.residual_N < tolerance_N_) {
+      break;  // rk4_frame left the stable state untouched
+    } else if (run.history.record(frame, run.residual_N, time_step_s_)) {
+      if (run.halvings == parameters_.stall_halvings)
+        throw step_failure(StopReason::stalled,
+                           "stalled (the residual did not fall below Mass spring/Stall residual "
+                           "fall times its earlier windows' after " +
+                               std::to_string(run.halvings) + " time step halvings)",
+                           true);
+      time_step_s_ *= 0.5;
+      ++run.halvings;
+      run.history.restart();
     }
-    if (updates == parameters_.contact_updates) {
-      std::ostringstream what;
-      what << "kept a penetration of " << penetration_m << " m (Mass spring/Gap tolerance "
-           << parameters_.gap_tolerance_m << " m) after " << updates
-           << " contact multiplier updates";
-      throw fail(what.str(), frame, residual, false);
+    ++frame;
+    if (parameters_.time_step_update_frames > 0 && parameters_.time_step_s == 0 &&
+        frame % parameters_.time_step_update_frames == 0)
+      time_step_s_ = std::ldexp(choose_time_step_s(), -run.halvings);
+    throw_if_interrupted(interruption_signal(),
+                         "during " + step_name(step) + " at frame " + std::to_string(frame));
+    if (frame % 64 == 0)
+      for (std::size_t i = 0; i < x_.size(); ++i)
+        if (!((x_[i] - run.start_x[i]).norm() < run.runaway_m))
+          throw step_failure(StopReason::ran_away,
+                             "diverged (vertex " + std::to_string(i) + " ran away)", false);
+    if (frame >= parameters_.maximum_frames) {
+      run.residual_N = residual_forces(x_, step.gravity_on, force_);
+      if (!run.sliding && run.residual_N < tolerance_N_) break;
+      throw step_failure(run.sliding ? StopReason::still_sliding : StopReason::iteration_limit,
+                         run.sliding
+                             ? "was still sliding (Mass spring/Slide damping) at Mass "
+                               "spring/Maximum frames"
+                             : "did not reach equilibrium within Mass spring/Maximum frames",
+                         true);
     }
-    ++updates;
   }
-  const double penetration_m = contact_penetration_m(false);
-  if (implicit) {
-    before_last_ = std::move(last_);
-    last_ = Settled{step.alpha, x_, multiplier_N_};
-  }
+  round.residual_N = {run.residual_N};
+  return round;
+}
+
+void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) {
+  const StepRun& run = *run_;
+  const bool implicit = parameters_.integrator == Integrator::implicit;
   // The net force as the stop rule saw it: friction from the anchors the step solved with
   // (committing them moves them onto the state and takes their force away).
   residual_forces(x_, step.gravity_on, force_);
-  const Vec3 net_N = net_force_N(force_);
+  report.net_force_N = net_force_N(force_);
+  report.net_force_read = true;
+  report.net_force_limit_N = net_force_limit_N_;
   const int slipping = commit_friction_anchors();
-
-  StepReport report;
-  report.iterations = flat_start_frames + frame;
-  report.residual_N = residual;
-  report.tolerance_N = tolerance_N_;
-  report.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::ostringstream detail;
-  detail << "mass spring: " << step_name(step) << " " << flat_start_detail;
-  if (parameters_.slide_damping_per_s > 0 && !implicit)
-    detail << "slid at damping " << parameters_.slide_damping_per_s << " 1/s for " << slide_frames
-           << " frames, ";
-  detail << "stable after ";
-  if (implicit)
-    detail << frame << " Newton iterations (implicit, " << updates
-           << " contact multiplier updates), first pseudo time step " << 1.0 / damping_per_s_
-           << " s, residual " << residual << " N < ";
-  else
-    detail << frame << " frames (" << std::min(frame, parameters_.quasi_static_frames)
-           << " quasi-static, " << updates << " contact multiplier updates, " << halvings
-           << " time step halvings), dt " << time_step_s_ << " s, damping " << damping_per_s_
-           << " 1/s, residual " << residual << " N < ";
-  detail << tolerance_N_ << " N" << (parameters_.stop_norm == StopNorm::rms ? " (rms)" : "")
-         << ", net force on the garment " << net_N.norm() << " N (" << net_N.x() << ", "
-         << net_N.y() << ", " << net_N.z() << ")";
-  if (net_force_limit_N_ > 0) detail << " < " << net_force_limit_N_ << " N";
   // How many vertices the committed friction anchors let slide (Coulomb cone reached).
-  if (friction_.active()) detail << ", " << slipping << " vertices slipping";
-  detail << ", largest penetration " << penetration_m << " m, " << report.wall_seconds << " s ("
-         << double(std::clock() - cpu_start) / CLOCKS_PER_SEC << " s CPU)";
-  if (halvings > 0) detail << "; " << history.text();
-  report.detail = detail.str();
+  report.n_slipping = friction_.active() ? slipping : -1;
+  report.backend = "mass spring";
+  report.step_index = step.index;
+  report.alpha = step.alpha;
+  report.stop_reason = StopReason::converged;
+  report.iterations = report.flat_start.frames + run.frame;
+  report.residual_N = run.residual_N;
+  report.tolerance_N = tolerance_N_;
+  report.stop_norm = parameters_.stop.norm;
+  if (implicit) {
+    report.has_newton = true;
+    report.newton.first_pseudo_time_step_s = 1.0 / damping_per_s_;
+  } else {
+    report.has_relaxation = true;
+    RelaxationReport& r = report.relaxation;
+    r.quasi_static_frames = std::min(run.frame, parameters_.quasi_static_frames);
+    r.slide_damping_per_s = parameters_.slide_damping_per_s;
+    r.slide_frames = run.slide_frames;
+    r.time_step_halvings = run.halvings;
+    r.time_step_s = time_step_s_;
+    r.damping_per_s = damping_per_s_;
+    if (run.halvings > 0) r.stall_history = run.history.text();
+  }
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
+  report.cpu_seconds = double(std::clock() - run.cpu_start) / CLOCKS_PER_SEC;
+}
+
+StepReport MassSpringBackend::solve(const LoadStep& step) {
+  run_ = std::make_unique<StepRun>(parameters_);
+  StepReport report;
+  run_flat_start(step, report);
+  prepare_step(step);
+  // Uzawa's iteration on the contact multipliers (core/load_step.h); the multipliers carry
+  // over to the next load step as its start.
+  MultiplierRounds rounds;
+  rounds.settle = [&] { return settle(step); };
+  rounds.read_gap = [&](bool update, int* count) { return contact_penetration_m(update, count); };
+  rounds.max_updates = parameters_.contact_updates;
+  rounds.gap_tolerance_m = parameters_.stop.gap_tolerance_m;
+  if (!rounds.run(report)) {
+    std::ostringstream what;
+    what << "kept a penetration of " << report.largest_penetration_m << " m (Solver/Gap tolerance "
+         << parameters_.stop.gap_tolerance_m << " m) after " << report.multiplier_updates
+         << " contact multiplier updates";
+    throw step_failure(StopReason::gap_not_closed, what.str(), false);
+  }
+  if (parameters_.integrator == Integrator::implicit)
+    record_settled(step.alpha, report.n_in_contact > 0);
+  finish_report(step, report);
   return report;
 }
 

@@ -14,12 +14,14 @@
 // panels instead (FlatPanelStart, Section 4.3): the positions set before it are ignored; once
 // the seams have closed they are welded and that step continues on the sewn garment as usual.
 // Positions set after the first step are used as with the sewn tube. That step's report counts
-// the flat-panel frames in its iterations and its wall time, and names them in its detail.
+// the flat-panel frames in its iterations and its wall time, and reports them
+// (StepReport::flat_start).
 #pragma once
 
 #include "contact/friction_anchors.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
+#include "core/load_step.h"
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
@@ -86,8 +88,8 @@ class MassSpringBackend final : public Backend {
   double choose_time_step_s() const;
   // The largest depth of a vertex in contact at the current state, m; with
   // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact
-  // force (penalty_contact.h).
-  double contact_penetration_m(bool update_multipliers);
+  // force (penalty_contact.h). `in_contact` (if given) counts the vertices in contact.
+  double contact_penetration_m(bool update_multipliers, int* in_contact = nullptr);
   // The contact force on particle i at x: the normal force lambda n and, with friction, the
   // return mapping's tangential force from the step's anchors. `slipping` (if given) is set
   // when the vertex slips.
@@ -123,17 +125,32 @@ class MassSpringBackend final : public Backend {
   bool friction_committed_ = false;
   DampedRk4 integrator_;
   StaticNewton newton_;
-  // Implicit integrator: the stable states (and multipliers) of the last two load steps and
-  // their alphas (NaN until known; set_positions forgets them), from which each step's start
-  // is extrapolated linearly in alpha.
-  struct Settled {
-    double alpha = std::numeric_limits<double>::quiet_NaN();
-    std::vector<Vec3> x;
-    std::vector<double> multiplier_N;
-  };
-  Settled last_, before_last_;
-  // Moves x_ and multiplier_N_ to the extrapolation of the last two stable states at `alpha`.
+  // Implicit integrator: the stable states (and multipliers) of the last two load steps in
+  // contact, from which each step's start is extrapolated in alpha (core/load_step.h; the
+  // secant's newest() says which is the last); set_positions forgets them.
+  AlphaSecant secant_;
+  std::vector<Vec3> settled_x_[2];
+  std::vector<double> settled_multiplier_N_[2];
+  // Moves x_ and multiplier_N_ to the secant's extrapolation at `alpha`.
   void predict(double alpha);
+  // Keeps the state just settled at `alpha` for the secant (a step in contact).
+  void record_settled(double alpha, bool in_contact);
+
+  // The load step being solved: what its settles share (frames counted over the step, the
+  // time step and its halvings, the slide) and what its report says.
+  struct StepRun;
+  std::unique_ptr<StepRun> run_;
+  // The named stages of solve().
+  void run_flat_start(const LoadStep& step, StepReport& report);
+  void prepare_step(const LoadStep& step);
+  MultiplierRound settle(const LoadStep& step);
+  MultiplierRound settle_rk4(const LoadStep& step);
+  MultiplierRound settle_implicit(const LoadStep& step);
+  void finish_report(const LoadStep& step, StepReport& report);
+  // A SolverError naming the step, frame and residual; `with_history` adds where the residual
+  // sits and the stall test's windows.
+  SolverError step_failure(StopReason reason, const std::string& what, bool with_history) const;
+
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
   // Contact queries (contact_force_N), kept per particle between the frames of a step: the

@@ -10,6 +10,7 @@ namespace tightfit {
 BackendEntry massspring_backend_entry() {
   BackendEntry entry;
   entry.name = "massspring";
+  entry.subsection = "Mass spring";
   entry.applies_friction = true;
   entry.description =
       "The paper's mass-spring model (Section 2.1): lumped particles, Volino triangle "
@@ -18,10 +19,11 @@ BackendEntry massspring_backend_entry() {
   entry.declare_parameters = [](dealii::ParameterHandler& prm) {
     MassSpringParameters::declare_parameters(prm);
   };
-  entry.create = [](const Problem& problem,
+  entry.create = [](const Problem& problem, const StopRule& stop,
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
     MassSpringParameters parameters;
     parameters.parse_parameters(prm);
+    parameters.stop = stop;
     return std::make_unique<MassSpringBackend>(problem, parameters);
   };
   return entry;

@@ -73,23 +73,10 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
                     "zero every frame) before damped RK4 takes over; the start also ends when "
                     "the stop rule is met.");
-  prm.declare_entry("Relative tolerance", text(d.relative_tolerance), Double(1e-12, 1.0),
-                    "Stop rule, dimensionless: a state is stable when the largest residual force "
-                    "on any vertex (internal + contact + gravity, held components removed) is "
-                    "below this times the tension scale Y h^2 / L: the law's stiffness scale Y "
-                    "(N/m) times the mean rest edge length h (m) squared over the garment's "
-                    "size L (m, the square root of its rest area). That is the force a smooth "
-                    "strain error of this size leaves on a vertex, so the tolerance bounds the "
-                    "strain error on every mesh.");
-  prm.declare_entry("Stop norm", "largest", Selection("largest|rms"),
-                    "Which size of the residual force field the stop rule (Relative tolerance) "
-                    "and the stall test read. 'largest': the largest residual on any vertex. "
-                    "'rms': the root mean square over the vertices, sqrt(sum |f|^2 / n), for a "
-                    "garment on a faceted body mesh where a few vertices chatter in a limit "
-                    "cycle the largest residual never leaves (docs/dressing.md).");
   prm.declare_entry("Net force tolerance", text(d.net_force_tolerance), Double(0.0, 1e6),
-                    "Stop rule on the garment as a whole, dimensionless: above 0, a state is "
-                    "stable only when the net force on the garment (the sum of the residual "
+                    "Stop rule on the garment as a whole beside Solver/Relative tolerance, "
+                    "dimensionless: above 0, a state is stable only when the net force on the "
+                    "garment (the sum of the residual "
                     "forces: what the body, friction and gravity leave unbalanced) is also "
                     "below this times the garment's weight (its mass times 9.80665 m/s^2, "
                     "whether gravity acts or not). The rms stop norm alone accepts a garment "
@@ -113,13 +100,10 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Contact multiplier updates", text(d.contact_updates), Integer(0, 1000),
                     "Augmented-Lagrangian (Uzawa) updates per load step, count: after each stable "
                     "state every vertex's contact multiplier becomes its contact force and the "
-                    "garment settles again, until the largest penetration is below Gap "
+                    "garment settles again, until the largest penetration is below Solver/Gap "
                     "tolerance; the pressure then does not depend on Contact/Penalty factor, "
                     "as with the FE backend. A step that needs more updates fails. 0 = the "
                     "plain penalty: vertices settle p / k inside the body.");
-  prm.declare_entry("Gap tolerance", text(d.gap_tolerance_m), Double(1e-15, 1.0),
-                    "Largest penetration of a vertex in contact at a finished load step with "
-                    "contact multiplier updates, m.");
   prm.declare_entry("Bending rigidity", text(d.bending_rigidity_N_m), Double(0.0, 1.0),
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
                     "Angular springs on interior edges, hinge stiffness 3 B |e|^2 / (A1 + A2) "
@@ -156,15 +140,12 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   slide_damping_per_s = prm.get_double("Slide damping");
   contact_normal_damping_ratio = prm.get_double("Contact normal damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
-  relative_tolerance = prm.get_double("Relative tolerance");
-  stop_norm = prm.get("Stop norm") == "rms" ? StopNorm::rms : StopNorm::largest;
   net_force_tolerance = prm.get_double("Net force tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
   stall_window_frames = prm.get_integer("Stall window");
   stall_fall = prm.get_double("Stall residual fall");
   stall_halvings = prm.get_integer("Stall time step halvings");
   contact_updates = prm.get_integer("Contact multiplier updates");
-  gap_tolerance_m = prm.get_double("Gap tolerance");
   bending_rigidity_N_m = prm.get_double("Bending rigidity");
   placement = prm.get("Placement") == "flat panels" ? Placement::flat_panels : Placement::sewn_tube;
   placement_gap_m = prm.get_double("Placement gap");

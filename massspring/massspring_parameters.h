@@ -2,6 +2,8 @@
 // Plain data here; declaring and parsing live in the .cc, the only file that sees deal.II.
 #pragma once
 
+#include "core/load_step.h"
+
 #include <string>
 
 namespace dealii {
@@ -27,17 +29,6 @@ enum class Integrator {
   // A regularised Newton iteration on the static equilibrium (static_newton.h): the same
   // forces, stop rule and contact multiplier updates, far fewer and costlier iterations.
   implicit,
-};
-
-// Which size of the residual force field the stop rule reads (docs/model.md, "Reaching
-// equilibrium").
-enum class StopNorm {
-  // The largest residual on any vertex: every vertex balanced to within the tolerance.
-  largest,
-  // The root mean square over the vertices, sqrt(sum |f_i|^2 / n): the garment balanced on the
-  // whole while a few vertices may still chatter against a faceted body (a limit cycle the
-  // largest residual never leaves; docs/dressing.md).
-  rms,
 };
 
 struct MassSpringParameters {
@@ -82,12 +73,9 @@ struct MassSpringParameters {
   // Frames of the paper's quasi-static start (velocity reset to zero every frame) before the
   // damped RK4 integration takes over.
   int quasi_static_frames = 30;
-  // Stop rule: the largest residual force on a vertex below this times the tension scale
-  // Y h^2 / L (law stiffness scale x mean rest edge length squared / the garment's size, the
-  // square root of its rest area): about the strain error left in the state.
-  double relative_tolerance = 1e-4;
-  // The residual's size the stop rule and the stall test read.
-  StopNorm stop_norm = StopNorm::largest;
+  // The stop rule and the gap tolerance: the case file's Solver entries, shared with the FE
+  // backend (core/load_step.h).
+  StopRule stop;
   // Stop rule on the garment as a whole: above 0, a state is stable only when the net force on
   // the garment (the sum of the residuals: what the body, friction and gravity leave
   // unbalanced) is also below this times the garment's weight (its mass times standard
@@ -105,10 +93,8 @@ struct MassSpringParameters {
   int stall_halvings = 2;
   // Contact multiplier updates (Uzawa) per load step: after each stable state every vertex's
   // multiplier becomes its contact force and the garment settles again, until the largest
-  // penetration is below gap_tolerance_m. 0 = the plain penalty (vertices sit p / k inside).
+  // penetration is below stop.gap_tolerance_m. 0 = the plain penalty (vertices sit p / k inside).
   int contact_updates = 10;
-  // Largest penetration of a vertex in contact at a finished step with contact updates, m.
-  double gap_tolerance_m = 1e-8;
   // Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m).
   double bending_rigidity_N_m = 1e-6;
   // Start of the first load step.
@@ -125,7 +111,7 @@ struct MassSpringParameters {
   void validate() const;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
-  // Reads the "Mass spring" subsection.
+  // Reads the "Mass spring" subsection (not `stop`: the caller sets it from the Solver one).
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 

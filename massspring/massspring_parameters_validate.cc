@@ -25,8 +25,7 @@ void MassSpringParameters::validate() const {
   require(time_step_update_frames >= 0, "Time step update frames",
           "must be >= 0 (0 = once a step)");
   require(quasi_static_frames >= 0, "Quasi-static frames", "must be >= 0");
-  require(relative_tolerance > 0 && relative_tolerance < 1, "Relative tolerance",
-          "must be in (0, 1)");
+  stop.validate(false);
   require(net_force_tolerance >= 0, "Net force tolerance", "must be >= 0 (0 = off)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
   require(maximum_newton_iterations > 0, "Maximum Newton iterations", "must be positive");
@@ -34,7 +33,6 @@ void MassSpringParameters::validate() const {
   require(stall_fall > 0 && stall_fall < 1, "Stall residual fall", "must be in (0, 1)");
   require(stall_halvings >= 0, "Stall time step halvings", "must be >= 0");
   require(contact_updates >= 0, "Contact multiplier updates", "must be >= 0 (0 = plain penalty)");
-  require(gap_tolerance_m > 0, "Gap tolerance", "must be positive (m)");
   require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");
   require(placement_gap_m >= 0, "Placement gap", "must be >= 0 (m)");
   require(seam_stiffness_factor > 0, "Seam spring stiffness factor", "must be positive");

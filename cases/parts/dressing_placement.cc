@@ -77,20 +77,20 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
     std::ostringstream message;
     message << "on the coarse mesh (Placement/Dressing/Coarse edge length " << coarse_m
             << " m): " << error.what();
-    throw SolverError(message.str());
+    throw SolverError(error.reason(), message.str());
   }
   std::vector<Vec3> coarse_x = dressed->start_positions_m;
   if (settle_rule.relative_tolerance > 0) {
     MassSpringParameters settle;
-    settle.stop_norm = StopNorm::rms;
-    settle.relative_tolerance = settle_rule.relative_tolerance;
+    settle.stop.norm = StopNorm::rms;
+    settle.stop.relative_tolerance = settle_rule.relative_tolerance;
     settle.net_force_tolerance = settle_rule.net_force_tolerance;
     settle.slide_damping_per_s = settle_rule.slide_damping_per_s;
     settle.contact_updates = 0;
     MassSpringBackend backend(dressed->problem, settle);
     backend.set_positions(coarse_x);
     const StepReport report = backend.solve(dressed->prepare_step(0));
-    std::printf("  dressing: the coarse mesh settled: %s\n", report.detail.c_str());
+    std::printf("  dressing: the coarse mesh settled: %s\n", report.text().c_str());
     coarse_x = backend.state().positions_m;
   }
   std::vector<Vec3> x = transfer_positions(dressed->mesh, coarse_x, scenario.mesh);
@@ -102,7 +102,7 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
             << back.deepest_m << " m inside the body (more than a quarter of a coarse edge, "
             << allowed_m << " m); dress on a finer coarse mesh (Placement/Dressing/Coarse edge "
             << "length)";
-    throw SolverError(message.str());
+    throw SolverError(StopReason::passed_into_body, message.str());
   }
   std::printf(
       "  dressing: carried from the coarse mesh (%d vertices, mean edge %.3g m) to %d vertices; "
@@ -167,7 +167,7 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
                        "With a Coarse edge length: above 0, the dressed coarse garment first "
                        "settles as the first load step would (gravity, friction), on the "
                        "mass-spring backend with the rms stop rule at this relative tolerance "
-                       "(Mass spring/Relative tolerance); 0: carried as dressed.");
+                       "(Solver/Relative tolerance); 0: carried as dressed.");
     prm.declare_double("Coarse net force tolerance", 0, 0, ParameterTree::unbounded,
                        "With a Coarse settle tolerance: above 0, the coarse settle also asks the "
                        "net force on the garment below this times its weight (Mass spring/Net "

@@ -76,7 +76,7 @@ Reading tube_on_cylinder(const std::string& backend, double mu) {
           std::max(reading.largest_friction_ratio,
                    m.field.friction_traction_Pa[v] / (mu * m.field.pressure_Pa[v]));
   }
-  reading.detail = m.report.detail;
+  reading.detail = m.report.text();
   return reading;
 }
 

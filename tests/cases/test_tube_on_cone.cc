@@ -63,7 +63,7 @@ testing::BodyCaseRun tube_on_cone(const std::string& backend, double mu,
                         "Protocol/Final alpha=1",
                         setting("Contact/Friction coefficient", mu),
                         setting("Contact/Tangential penalty ratio", tangential_ratio),
-                        setting("Mass spring/Relative tolerance", relative_tolerance)},
+                        setting("Solver/Relative tolerance", relative_tolerance)},
                        backend);
 }
 
@@ -153,7 +153,7 @@ TEST(TubeOnConeBackends, HoldingTubeAgrees) {
   std::printf(
       "holding tube: p mass-spring %.4f Pa, fem %.4f Pa (%+.2e), shift difference %.2e m, "
       "fem friction / (mu p) at most %.4f\n%s\n",
-      p_ms, p_fe, p_fe / p_ms - 1, dshift, largest_friction_ratio, fe.last().report.detail.c_str());
+      p_ms, p_fe, p_fe / p_ms - 1, dshift, largest_friction_ratio, fe.last().report.text().c_str());
   // Measured: the pressures 2.9e-4 apart (the mass-spring stop rule's strain error of 1e-4 and
   // its bending springs), the positions 8.5e-8 m; bounds about 3 and 10 times. No vertex's
   // friction exceeds the cone mu p (the slipping ones sit on it).
@@ -177,8 +177,8 @@ void expect_the_plain_steps_holding(const char* route, const testing::BodyCaseRu
   const double p_plain = plain.last().p_mean_Pa(), p_other = other.last().p_mean_Pa();
   const double dshift = plain.mean_shift_m(kAxis) - other.mean_shift_m(kAxis);
   std::printf("fem, plain / %s steps: p %.9f / %.9f Pa, shift difference %.2e m\n%s\n%s\n", route,
-              p_plain, p_other, dshift, plain.last().report.detail.c_str(),
-              other.last().report.detail.c_str());
+              p_plain, p_other, dshift, plain.last().report.text().c_str(),
+              other.last().report.text().c_str());
   EXPECT_LT(std::abs(p_other / p_plain - 1), 1e-8);
   EXPECT_LT(std::abs(dshift), 1e-10);
 }

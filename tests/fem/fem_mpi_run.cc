@@ -59,7 +59,7 @@ Run solve_steps(testing::TubeCase& tube, const FemParameters& parameters) {
         run.internal_N.insert(run.internal_N.end(), f.data(), f.data() + 3);
       std::printf("degree %d, %d ranks, alpha %.2f: p_mean %.12e Pa, %.3f s | %s\n",
                   parameters.element_degree, n_ranks, alpha, mean_Pa, report.wall_seconds,
-                  report.detail.c_str());
+                  report.text().c_str());
     }
   }
   return run;

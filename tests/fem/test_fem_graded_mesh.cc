@@ -68,7 +68,7 @@ Reading tube_at(int n_a, int n_b, double alpha) {
   const double theory = closed_form_pressure_Pa("linear biot", EndCondition::free_ends, tube.fabric,
                                                 tube.rest_radius_m, alpha);
   return {p.mean_Pa / theory - 1, p.std_Pa / p.mean_Pa, sum[0] / count[0],
-          sum[1] / count[1],      report.iterations,    report.detail};
+          sum[1] / count[1],      report.iterations,    report.text()};
 }
 
 TEST(FemGradedMesh, PanelsBalanceAtTheSeamAndTheMeanMatchesTheClosedForm) {

@@ -108,7 +108,7 @@ TEST(FemGravity, ContactForcesCarryTheWeight) {
         tube.fabric.areal_density_kg_per_m2 * rest_area(tube.mesh) * tube.problem.gravity_m_per_s2;
     const Vec3 carried = sum(backend.state().contact_force_N);
     std::printf("degree %d: contact %.9e N, weight %.9e N, |sum| %.2e N; %s\n", degree, carried.y(),
-                weight.y(), (carried + weight).norm(), report.detail.c_str());
+                weight.y(), (carried + weight).norm(), report.text().c_str());
     // Degree 1: the contact forces are the nodal multipliers, in equilibrium to the Newton
     // tolerance (1e-10 Y h per node, measured |sum| 1.7e-13 N): far below 1e-8 of the weight.
     // Degree 2: the state's contact forces are the recovered traction times flat vertex areas

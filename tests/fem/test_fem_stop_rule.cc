@@ -1,4 +1,4 @@
-// The FE backend's relative stop rule ('Finite elements/Relative tolerance', 'Stop norm'): its
+// The FE backend's relative stop rule ('Solver/Relative tolerance', 'Solver/Stop norm'): its
 // threshold is the mass-spring backend's, e Y h^2 / L (core/garment.h), computed here from the
 // mesh; the state it accepts meets that threshold and, as the rule promises, lies within about
 // e of strain of the exact equilibrium: its pressure against the one of the tight rule (1e-10
@@ -55,11 +55,12 @@ TEST(FemStopRule, TensionScaleRuleMeetsTheMassSpringThresholdAndTheClosedForm) {
 
   const Settled tight = settle(FemParameters{});
   std::printf("tight rule: p %.8f Pa (closed form %.8f), %d iterations, %s\n", tight.p_mean_Pa,
-              theory, tight.report.iterations, tight.report.detail.c_str());
+              theory, tight.report.iterations, tight.report.text().c_str());
   for (const bool rms : {false, true}) {
     FemParameters parameters;
-    parameters.relative_tolerance = kRelativeTolerance;
-    parameters.stop_on_rms = rms;
+    parameters.residual_tolerance = 0.0;  // the shared rule alone
+    parameters.stop.relative_tolerance = kRelativeTolerance;
+    parameters.stop.norm = rms ? StopNorm::rms : StopNorm::largest;
     const Settled loose = settle(parameters);
     const char* norm = rms ? "rms" : "largest";
     std::printf(
@@ -67,7 +68,7 @@ TEST(FemStopRule, TensionScaleRuleMeetsTheMassSpringThresholdAndTheClosedForm) {
         "tight rule's), %d iterations, %s\n",
         norm, loose.report.tolerance_N, expected_tolerance_N, loose.report.residual_N,
         loose.p_mean_Pa, loose.p_mean_Pa / tight.p_mean_Pa - 1, loose.report.iterations,
-        loose.report.detail.c_str());
+        loose.report.text().c_str());
     EXPECT_NEAR(loose.report.tolerance_N, expected_tolerance_N, 1e-12 * expected_tolerance_N)
         << norm;
     EXPECT_LE(loose.report.residual_N, loose.report.tolerance_N) << norm;
@@ -97,10 +98,11 @@ TEST(FemStopRule, ContactSetPredictionsReachThePlainNewtonEquilibrium) {
   const Settled predicted = settle(parameters);
   std::printf("plain: p %.10f Pa, %d iterations; predicted: p %.10f Pa, %d iterations, %s\n",
               plain.p_mean_Pa, plain.report.iterations, predicted.p_mean_Pa,
-              predicted.report.iterations, predicted.report.detail.c_str());
+              predicted.report.iterations, predicted.report.text().c_str());
   EXPECT_LE(predicted.report.residual_N, predicted.report.tolerance_N);
   // The predicted path was taken, and it saves Newton steps here (measured 8 against 14).
-  EXPECT_NE(predicted.report.detail.find("solves on a predicted contact set"), std::string::npos);
+  EXPECT_GT(predicted.report.newton.n_set_predictions, 0);
+  EXPECT_EQ(plain.report.newton.n_set_predictions, 0);
   EXPECT_LT(predicted.report.iterations, plain.report.iterations);
   // Both meet the tight rule (1e-10 Y h): the same state (measured equal to 10 digits).
   EXPECT_NEAR(predicted.p_mean_Pa, plain.p_mean_Pa, 1e-9 * plain.p_mean_Pa);
@@ -113,9 +115,10 @@ TEST(FemStopRule, RmsRuleWithGravityAndFrictionCarriesTheWeight) {
   const double h = mean_rest_edge_length_m(tube.mesh);
   tube.problem.tangential_stiffness_Pa_per_m = 100.0 * tube.law->stiffness_scale() / (h * h);
   FemParameters parameters;
-  parameters.relative_tolerance = 3e-3;
-  parameters.stop_on_rms = true;
-  parameters.gap_tolerance_m = 1e-6;
+  parameters.residual_tolerance = 0.0;  // the shared rule alone
+  parameters.stop.relative_tolerance = 3e-3;
+  parameters.stop.norm = StopNorm::rms;
+  parameters.stop.gap_tolerance_m = 1e-6;
   FemBackend backend(tube.problem, parameters);
   const double alpha = 1.2;
   tube.grow_to(alpha);
@@ -130,7 +133,7 @@ TEST(FemStopRule, RmsRuleWithGravityAndFrictionCarriesTheWeight) {
                                 (std::accumulate(h_k.begin(), h_k.end(), 0.0) / h_k.size());
   const double bound_N = tube.mesh.n_vertices * largest_weight * report.residual_N;
   std::printf("contact + friction %.6e N, weight %.6e N, |sum| %.3e N (bound %.3e N); %s\n",
-              carried.y(), weight.y(), (carried + weight).norm(), bound_N, report.detail.c_str());
+              carried.y(), weight.y(), (carried + weight).norm(), bound_N, report.text().c_str());
   EXPECT_LE(report.residual_N, report.tolerance_N);
   EXPECT_LT((carried + weight).norm(), bound_N);
   // Measured 8.7e-4 of the weight (Newton's last step lands well below the rule); 3e-3.

@@ -17,10 +17,13 @@ namespace {
 
 // The message of the SolverError that `step` throws when `backend` solves it; records a
 // failure and returns "" when it throws none.
-std::string solver_error_message(MassSpringBackend& backend, const LoadStep& step) {
+// The message of the SolverError the step throws; `reason` gets its StopReason.
+std::string solver_error_message(MassSpringBackend& backend, const LoadStep& step,
+                                 StopReason* reason) {
   try {
     backend.solve(step);
   } catch (const SolverError& e) {
+    *reason = e.reason();
     return e.what();
   }
   ADD_FAILURE() << "expected SolverError";
@@ -45,7 +48,7 @@ TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
     // On the surface to the gap tolerance: the contact multipliers have taken the penalty's
     // penetration away.
     EXPECT_TRUE(s.in_contact[v]);
-    EXPECT_LT(std::abs(s.gap_m[v]), MassSpringParameters{}.gap_tolerance_m);
+    EXPECT_LT(std::abs(s.gap_m[v]), MassSpringParameters{}.stop.gap_tolerance_m);
   }
   EXPECT_LT(largest, report.tolerance_N);
   EXPECT_GT(largest_contact, 100 * report.tolerance_N);
@@ -58,7 +61,7 @@ TEST(MassSpringSolver, RmsStopRuleLeavesTheRootMeanSquareResidualBelowTheToleran
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
   tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
   MassSpringParameters parameters;
-  parameters.stop_norm = StopNorm::rms;
+  parameters.stop.norm = StopNorm::rms;
   MassSpringBackend backend(tube.problem, parameters);
   backend.set_positions(tube.start_positions());
   const StepReport report = backend.solve(LoadStep{0, 1.3, false});
@@ -100,8 +103,8 @@ TEST(MassSpringSolver, NetForceToleranceHoldsTheSettleUntilTheGarmentIsBalancedA
       2 * 0.157 * test::TubeOnCylinder::height_m * tube.fabric.areal_density_kg_per_m2 * 9.80665;
   auto net_force_after = [&](double net_force_tolerance, StepReport& report) {
     MassSpringParameters parameters;
-    parameters.stop_norm = StopNorm::rms;
-    parameters.relative_tolerance = 1e-2;
+    parameters.stop.norm = StopNorm::rms;
+    parameters.stop.relative_tolerance = 1e-2;
     parameters.contact_updates = 0;
     parameters.net_force_tolerance = net_force_tolerance;
     MassSpringBackend backend(tube.problem, parameters);
@@ -125,7 +128,12 @@ TEST(MassSpringSolver, NetForceToleranceHoldsTheSettleUntilTheGarmentIsBalancedA
   EXPECT_GT(loose_N, 1e-3 * weight_N);
   EXPECT_LT(balanced_N, 1e-3 * weight_N);
   EXPECT_GT(balanced.iterations, loose.iterations);
-  EXPECT_NE(balanced.detail.find("net force on the garment"), std::string::npos) << balanced.detail;
+  // The report gives the net force the stop rule read, within its limit.
+  EXPECT_TRUE(balanced.net_force_read);
+  EXPECT_NEAR(balanced.net_force_limit_N, 1e-3 * weight_N,
+              1e-12 * weight_N);  // sums in another order
+  EXPECT_LT(balanced.net_force_N.norm(), balanced.net_force_limit_N);
+  EXPECT_EQ(loose.net_force_limit_N, 0.0);
 }
 
 // Guards the stop rule's formula: threshold = relative tolerance x stiffness scale Y x h^2 / L,
@@ -140,8 +148,8 @@ TEST(MassSpringSolver, StopRuleThresholdFormula) {
   backend.set_positions(test::flat_positions(mesh));
   const StepReport report = backend.solve(LoadStep{0, 1.0, false});
   const double h = (15 * 0.1 + 16 * 0.05 + 12 * std::hypot(0.1, 0.05)) / 43;
-  const double expected = MassSpringParameters{}.relative_tolerance * panel.law->stiffness_scale() *
-                          h * h / std::sqrt(0.3 * 0.2);
+  const double expected = MassSpringParameters{}.stop.relative_tolerance *
+                          panel.law->stiffness_scale() * h * h / std::sqrt(0.3 * 0.2);
   EXPECT_NEAR(report.tolerance_N, expected, 1e-12 * expected);
 }
 
@@ -174,7 +182,7 @@ TEST(MassSpringSolver, ContactMultipliersRemoveThePenaltyFromThePressure) {
   // Equal to what the stop rule leaves: a residual of 1e-4 Y h^2 / L (1.4e-5 N) is 1.4e-4 of
   // a vertex's contact force (0.1 N) here.
   EXPECT_NEAR(soft / stiff, 1.0, 1.4e-4);
-  EXPECT_LT(std::max(soft_depth, stiff_depth), MassSpringParameters{}.gap_tolerance_m);
+  EXPECT_LT(std::max(soft_depth, stiff_depth), MassSpringParameters{}.stop.gap_tolerance_m);
   // The plain penalty: a pressure that moves with k, and a depth of f / (k A0) = p alpha / k
   // (a vertex's force f = p A over its rest area A0 = A / alpha: hoop stretch alpha, axial 1).
   const auto [plain, plain_depth] = mean_pressure_and_depth(20.0, 0);
@@ -233,7 +241,9 @@ TEST(MassSpringSolver, NonConvergenceThrowsNamingTheStepAndResidual) {
   // Start at the rest radius, deep inside the cylinder: three frames cannot settle that.
   backend.set_positions(
       place_tube_round_cylinder(tube.garment, tube.mesh, tube.cylinder, tube.rest_radius_m()));
-  const std::string message = solver_error_message(backend, LoadStep{7, 1.5, false});
+  StopReason reason = StopReason::converged;
+  const std::string message = solver_error_message(backend, LoadStep{7, 1.5, false}, &reason);
+  EXPECT_EQ(reason, StopReason::iteration_limit);
   EXPECT_NE(message.find("load step 7"), std::string::npos) << message;
   EXPECT_NE(message.find("alpha 1.5"), std::string::npos) << message;
   EXPECT_NE(message.find("residual"), std::string::npos) << message;
@@ -244,10 +254,12 @@ TEST(MassSpringSolver, ContactThatDoesNotCloseThrowsNamingTheStepAndPenetration)
   tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
   MassSpringParameters parameters;
   parameters.contact_updates = 1;
-  parameters.gap_tolerance_m = 1e-15;  // below what one update reaches from the plain penalty
+  parameters.stop.gap_tolerance_m = 1e-15;  // below what one update reaches from the plain penalty
   MassSpringBackend backend(tube.problem, parameters);
   backend.set_positions(tube.start_positions());
-  const std::string message = solver_error_message(backend, LoadStep{4, 1.3, false});
+  StopReason reason = StopReason::converged;
+  const std::string message = solver_error_message(backend, LoadStep{4, 1.3, false}, &reason);
+  EXPECT_EQ(reason, StopReason::gap_not_closed);
   EXPECT_NE(message.find("load step 4"), std::string::npos) << message;
   EXPECT_NE(message.find("penetration"), std::string::npos) << message;
   EXPECT_NE(message.find("1 contact multiplier updates"), std::string::npos) << message;
@@ -261,13 +273,15 @@ TEST(MassSpringSolver, StallEndsTheStepEarlyWithTheResidualHistory) {
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
   tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
   MassSpringParameters parameters;
-  parameters.relative_tolerance = 1e-16;
+  parameters.stop.relative_tolerance = 1e-16;
   parameters.contact_updates = 0;
   parameters.stall_window_frames = 200;
   parameters.stall_halvings = 1;
   MassSpringBackend backend(tube.problem, parameters);
   backend.set_positions(tube.start_positions());
-  const std::string message = solver_error_message(backend, LoadStep{3, 1.3, false});
+  StopReason reason = StopReason::converged;
+  const std::string message = solver_error_message(backend, LoadStep{3, 1.3, false}, &reason);
+  EXPECT_EQ(reason, StopReason::stalled);
   EXPECT_NE(message.find("load step 3"), std::string::npos) << message;
   EXPECT_NE(message.find("stalled"), std::string::npos) << message;
   EXPECT_NE(message.find("after 1 time step halvings"), std::string::npos) << message;
@@ -289,7 +303,10 @@ TEST(MassSpringSolver, DivergenceThrowsInsteadOfHanging) {
   parameters.time_step_s = 1e-2;  // far beyond RK4's stability limit for this mesh
   MassSpringBackend backend(tube.problem, parameters);
   backend.set_positions(tube.start_positions());
-  const std::string message = solver_error_message(backend, LoadStep{2, 1.5, false});
+  StopReason reason = StopReason::converged;
+  const std::string message = solver_error_message(backend, LoadStep{2, 1.5, false}, &reason);
+  EXPECT_TRUE(reason == StopReason::not_finite || reason == StopReason::ran_away)
+      << to_string(reason);
   EXPECT_NE(message.find("diverged"), std::string::npos) << message;
   EXPECT_NE(message.find("load step 2"), std::string::npos) << message;
 }

@@ -1,0 +1,103 @@
+// What both backends do round a load step, written once: the stop rule and the size of the
+// residual it reads, the secant predictor in alpha, and the contact multiplier (Uzawa) rounds
+// (docs/model.md, "Reaching equilibrium" and "Contact"). Each backend brings its own physics
+// and its own solver (RK4 frames or Newton's method) as the settle of one round.
+#pragma once
+
+#include "core/step_report.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+// The shared solver entries (the case file's Solver subsection, docs/parameters.md).
+struct StopRule {
+  // A state is stable when its residual (`norm`) is below this times the tension scale
+  // Y h^2 / L (core/tension_scale.h). The FE backend alone may take 0: its own absolute rule,
+  // 'Finite elements/Residual tolerance'.
+  double relative_tolerance = 1e-4;
+  StopNorm norm = StopNorm::largest;
+  // Largest penetration of a vertex in contact at a finished step with multiplier updates, m.
+  double gap_tolerance_m = 1e-8;
+
+  // Throws std::invalid_argument naming the Solver entry when a value is out of range;
+  // `zero_tolerance_allowed` for a backend with a rule of its own at 0.
+  void validate(bool zero_tolerance_allowed) const;
+};
+
+// The size of a residual force field as the stop rule reads it: fed one size at a time (a
+// vertex's force or a degree of freedom's component, N), then read over `count` of them (the
+// vertices or nodes, for the rms). NaN when any was not finite.
+class ResidualSize {
+ public:
+  void add(double size_N) {
+    largest_N_ = size_N > largest_N_ ? size_N : largest_N_;
+    sum_squared_ += size_N * size_N;  // a comparison drops NaN; the sum keeps it
+  }
+  // Largest size and sum of squares of this part (ranks combine them before reading).
+  double largest_N() const { return largest_N_; }
+  double sum_squared() const { return sum_squared_; }
+  // The stop rule's size of the whole field from its parts' largest and sum of squares.
+  static double read(StopNorm norm, double largest_N, double sum_squared, double count);
+  double read(StopNorm norm, double count) const {
+    return read(norm, largest_N_, sum_squared_, count);
+  }
+
+ private:
+  double largest_N_ = 0.0;
+  double sum_squared_ = 0.0;
+};
+
+// The secant (continuation) predictor in alpha through the last two converged steps in
+// contact: a start, never the equilibrium. ratio() is how far past the last step the new alpha
+// lies, in units of the last interval, or 0 (no prediction) with fewer than two such steps, a
+// backward step, or one further than four intervals (there the secant misleads).
+class AlphaSecant {
+ public:
+  void forget() { n_ = 0; }
+  // A converged step at `alpha`; steps out of contact break the secant (the garment hangs
+  // loose, and its positions say nothing of the next contact).
+  void record(double alpha, bool in_contact);
+  double ratio(double alpha) const;
+  // 0 (newest) or 1: which of the two stored states a backend's own record is in.
+  int newest() const { return newest_; }
+  // The multipliers extrapolated by `ratio` from the last two steps' (kept non-negative).
+  static void extrapolate_multipliers(double ratio, const std::vector<double>& last,
+                                      const std::vector<double>& before,
+                                      std::vector<double>& multiplier_N);
+
+ private:
+  int n_ = 0;
+  int newest_ = 1;
+  double alpha_[2] = {0.0, 0.0};
+};
+
+// One load step's contact multiplier (Uzawa) rounds: the backend's settle at fixed
+// multipliers, then every vertex's multiplier becomes its contact force, until no vertex in
+// contact is deeper than the gap tolerance. What happens after the update that closes the gap
+// depends on what the backend reports as contact force: one that reports the multiplier itself
+// (the FE backend) is done, since the state it solved is in equilibrium with the updated
+// multipliers; one that reads its contact force from the state, max(0, lambda - kA g) (the
+// mass-spring backend), settles once more on the final multipliers and reads the gap again
+// there, without updating (the settle moves each vertex by up to its kA g).
+struct MultiplierRounds {
+  // Settles at the current multipliers; returns what the round did (penetration_m and
+  // n_in_contact are filled by the rounds).
+  std::function<MultiplierRound()> settle;
+  // The largest penetration of a vertex in contact, m, and (when `count` is not null) how many
+  // are in contact; with `update`, each multiplier first becomes the contact force.
+  std::function<double(bool update, int* count)> read_gap;
+  // Updates allowed; the rounds fail when the gap is still open after the last (0: the plain
+  // penalty, one settle and no update).
+  int max_updates = 0;
+  double gap_tolerance_m = 1e-8;
+  bool settle_after_last_update = true;
+
+  // Runs the rounds into `report` (rounds, multiplier_updates, largest_penetration_m,
+  // n_in_contact); returns false when the gap did not close within max_updates.
+  bool run(StepReport& report) const;
+};
+
+}  // namespace tightfit
