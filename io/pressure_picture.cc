@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace tightfit {
@@ -20,6 +21,24 @@ Vec3 viridis(double t) {
   const double s = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * (n - 1);
   const int i = std::min(n - 2, static_cast<int>(s));
   return (1 - (s - i)) * samples[i] + (s - i) * samples[i + 1];
+}
+
+Vec3 above_top_colour() {
+  return Vec3(0.85, 0.1, 0.1);
+}
+
+std::vector<std::array<Vec3, 2>> boundary_segments(const std::vector<Vec3>& points,
+                                                   const std::vector<Triangle>& triangles) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const Triangle& t : triangles)
+    for (int c = 0; c < 3; ++c) {
+      const int a = t[c], b = t[(c + 1) % 3];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<std::array<Vec3, 2>> segments;
+  for (const auto& [edge, n] : uses)
+    if (n == 1) segments.push_back({points.at(edge.first), points.at(edge.second)});
+  return segments;
 }
 
 namespace {
@@ -46,35 +65,48 @@ void write_pressure_picture(const std::string& path, const PressureSurface& surf
     throw std::invalid_argument("picture: the up direction is along the view direction");
   const Vec3 up = up_across.normalized();
   const Vec3 right = forward.cross(up);
+  const auto to_view = [&](const Vec3& x) { return Vec3(x.dot(right), x.dot(up), x.dot(forward)); };
 
-  // The colour bar takes the right-hand side; the surface is fitted into the rest.
-  const int bar_width = 24, label_room = 190, margin = 24, title_room = 40;
+  double largest_Pa = 0.0;
+  for (std::size_t v = 0; v < n; ++v)
+    if (surface.has_pressure[v]) largest_Pa = std::max(largest_Pa, surface.pressure_Pa[v]);
+  double top_Pa = style.top_pressure_Pa > 0 ? style.top_pressure_Pa : largest_Pa;
+  if (!(top_Pa > 0)) top_Pa = 1.0;  // nothing presses: a bar from 0 to 1 Pa
+  const bool clipped = largest_Pa > top_Pa;
+  const bool legend = clipped || !surface.outline_m.empty();
+
+  // The colour bar takes the right-hand side; the surface is fitted into the rest, below the
+  // title and the legend (when there is one).
+  const int bar_width = 24, label_room = 190, margin = 24, title_room = 40, legend_room = 26;
   RasterCanvas canvas(style.width, style.height, Vec3(1, 1, 1));
   const int area_x0 = margin, area_x1 = style.width - label_room - bar_width - 2 * margin;
-  const int area_y0 = title_room, area_y1 = style.height - margin;
-  double top_Pa = style.top_pressure_Pa;
-  if (!(top_Pa > 0))
-    for (std::size_t v = 0; v < n; ++v)
-      if (surface.has_pressure[v]) top_Pa = std::max(top_Pa, surface.pressure_Pa[v]);
-  if (!(top_Pa > 0)) top_Pa = 1.0;  // nothing presses: a bar from 0 to 1 Pa
+  const int area_y0 = title_room + (legend ? legend_room : 0), area_y1 = style.height - margin;
+  const Vec3 grey(0.78, 0.78, 0.78);
 
   if (n > 0 && area_x1 > area_x0 && area_y1 > area_y0) {
     std::vector<Vec3> screen(n);
     Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
-    for (std::size_t v = 0; v < n; ++v) {
-      const Vec3& x = surface.points_m[v];
-      screen[v] = Vec3(x.dot(right), x.dot(up), x.dot(forward));
-      low = low.cwiseMin(screen[v]);
-      high = high.cwiseMax(screen[v]);
+    for (std::size_t v = 0; v < n; ++v) screen[v] = to_view(surface.points_m[v]);
+    for (const Vec3& x : surface.frame_m.empty() ? screen : std::vector<Vec3>{}) {
+      low = low.cwiseMin(x);
+      high = high.cwiseMax(x);
+    }
+    for (const Vec3& p : surface.frame_m) {
+      low = low.cwiseMin(to_view(p));
+      high = high.cwiseMax(to_view(p));
     }
     const double span_x = std::max(high.x() - low.x(), 1e-12),
                  span_y = std::max(high.y() - low.y(), 1e-12);
-    const double scale = std::min((area_x1 - area_x0) / span_x, (area_y1 - area_y0) / span_y);
+    // A frame round chosen points keeps a margin round them.
+    const double fill = surface.frame_m.empty() ? 1.0 : 0.9;
+    const double scale =
+        fill * std::min((area_x1 - area_x0) / span_x, (area_y1 - area_y0) / span_y);
     const double centre_x = 0.5 * (area_x0 + area_x1), centre_y = 0.5 * (area_y0 + area_y1);
-    for (Vec3& s : screen)
-      s = Vec3(centre_x + scale * (s.x() - 0.5 * (low.x() + high.x())),
-               centre_y - scale * (s.y() - 0.5 * (low.y() + high.y())), s.z());
-    const Vec3 grey(0.78, 0.78, 0.78);
+    const auto to_screen = [&](const Vec3& s) {
+      return Vec3(centre_x + scale * (s.x() - 0.5 * (low.x() + high.x())),
+                  centre_y - scale * (s.y() - 0.5 * (low.y() + high.y())), s.z());
+    };
+    for (Vec3& s : screen) s = to_screen(s);
     for (const Triangle& t : surface.triangles) {
       const Vec3& a = surface.points_m[t[0]];
       const Vec3 normal = (surface.points_m[t[1]] - a).cross(surface.points_m[t[2]] - a);
@@ -89,14 +121,26 @@ void write_pressure_picture(const std::string& path, const PressureSurface& surf
             pressure += l[c] * surface.pressure_Pa[t[c]];
           }
         if (covered < 0.5) return Vec3(shade * grey);
+        if (pressure / covered > top_Pa) return Vec3(shade * above_top_colour());
         return Vec3(shade * viridis(pressure / covered / top_Pa));
       });
     }
+    for (const auto& [a, b] : surface.outline_m)
+      canvas.draw_line(to_screen(to_view(a)), to_screen(to_view(b)), 2.0, Vec3(0.05, 0.05, 0.05),
+                       surface.outline_depth_tolerance_m);
+    // What a frame cut off stays out of the title, the legend and the colour bar.
+    const Vec3 white(1, 1, 1);
+    canvas.fill_rectangle(0, 0, style.width, area_y0, white);
+    canvas.fill_rectangle(0, area_y1, style.width, style.height, white);
+    canvas.fill_rectangle(0, 0, area_x0, style.height, white);
+    canvas.fill_rectangle(area_x1, 0, style.width, style.height, white);
   }
 
-  // The colour bar, top pressure at the top, five labelled ticks.
+  // The colour bar, top pressure at the top, five labelled ticks; above it, when the top cuts
+  // off larger pressures, a swatch of the colour they are drawn in and the largest of them.
   const int bar_x0 = style.width - label_room - bar_width - margin, bar_x1 = bar_x0 + bar_width;
-  const int bar_y0 = title_room + 20, bar_y1 = style.height - margin - 10;
+  const int bar_y0 = title_room + 20 + (clipped ? legend_room + 10 : 0),
+            bar_y1 = style.height - margin - 10;
   for (int y = bar_y0; y < bar_y1; ++y)
     canvas.fill_rectangle(bar_x0, y, bar_x1, y + 1,
                           viridis(double(bar_y1 - 1 - y) / std::max(1, bar_y1 - bar_y0 - 1)));
@@ -107,7 +151,36 @@ void write_pressure_picture(const std::string& path, const PressureSurface& surf
     canvas.fill_rectangle(bar_x1, y, bar_x1 + 6, y + 1, Vec3::Zero());
     canvas.draw_text(label(fraction * top_Pa), bar_x1 + 9, y + 5, 13, RasterCanvas::Align::left);
   }
-  canvas.draw_text("pressure", bar_x0, bar_y0 - 8, 14, RasterCanvas::Align::left);
+  if (clipped) {
+    canvas.fill_rectangle(bar_x0, bar_y0 - legend_room - 4, bar_x1, bar_y0 - 6, above_top_colour());
+    canvas.draw_text("up to " + label(largest_Pa), bar_x1 + 9, bar_y0 - 10, 13,
+                     RasterCanvas::Align::left);
+  }
+  canvas.draw_text("pressure", bar_x0, bar_y0 - 8 - (clipped ? legend_room : 0), 14,
+                   RasterCanvas::Align::left);
+
+  // The legend: what grey, the dark line and the red mean.
+  if (legend) {
+    int x = margin;
+    const int y = title_room + legend_room - 8;
+    const auto entry = [&](const std::string& text) {
+      canvas.draw_text(text, x, y, 13, RasterCanvas::Align::left);
+      x += 9 * static_cast<int>(text.size()) + 24;
+    };
+    canvas.fill_rectangle(x, y - 12, x + 14, y + 2, grey);
+    x += 20;
+    entry(surface.grey_means);
+    if (!surface.outline_m.empty()) {
+      canvas.fill_rectangle(x, y - 6, x + 22, y - 4, Vec3(0.05, 0.05, 0.05));
+      x += 28;
+      entry("garment's edge");
+    }
+    if (clipped) {
+      canvas.fill_rectangle(x, y - 12, x + 14, y + 2, above_top_colour());
+      x += 20;
+      entry("above the colour bar");
+    }
+  }
   canvas.draw_text(style.title, margin, 26, 16, RasterCanvas::Align::left);
   canvas.write_png(path);
 }

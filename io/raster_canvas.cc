@@ -56,6 +56,26 @@ void RasterCanvas::fill_triangle(const std::array<Vec3, 3>& p,
     }
 }
 
+void RasterCanvas::draw_line(const Vec3& a, const Vec3& b, double width, const Vec3& colour,
+                             double depth_tolerance) {
+  // Square stamps every half pixel along the segment.
+  const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
+  const int n = std::max(1, static_cast<int>(std::ceil(2 * length)));
+  const double half = 0.5 * width;
+  for (int k = 0; k <= n; ++k) {
+    const Vec3 p = a + (b - a) * (double(k) / n);
+    const int x0 = std::max(0, static_cast<int>(std::floor(p.x() - half + 0.5)));
+    const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(p.x() + half - 0.5)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(p.y() - half + 0.5)));
+    const int y1 = std::min(height_ - 1, static_cast<int>(std::floor(p.y() + half - 0.5)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+        if (p.z() <= depth_[i] + depth_tolerance) rgb_[i] = colour;
+      }
+  }
+}
+
 void RasterCanvas::fill_rectangle(int x0, int y0, int x1, int y1, const Vec3& colour) {
   for (int y = std::max(0, y0); y < std::min(height_, y1); ++y)
     for (int x = std::max(0, x0); x < std::min(width_, x1); ++x) {

@@ -28,6 +28,11 @@ class RasterCanvas {
   // `colour_of(barycentric coordinates)`.
   void fill_triangle(const std::array<Vec3, 3>& corners,
                      const std::function<Vec3(const Vec3& barycentric)>& colour_of);
+  // The segment from a to b ((x, y, depth) in pixels as for triangles), `width` pixels wide,
+  // on every pixel where what is drawn is not nearer than the segment by more than
+  // `depth_tolerance` (the depth buffer is left as it is).
+  void draw_line(const Vec3& a, const Vec3& b, double width, const Vec3& colour,
+                 double depth_tolerance);
   // A rectangle over everything, [x0, x1) x [y0, y1).
   void fill_rectangle(int x0, int y0, int x1, int y1, const Vec3& colour);
 

@@ -1,7 +1,8 @@
 // Measurements/List: pictures. pressure_front.png and pressure_back.png: the pressure map of the
 // last load step seen from the front and from the back (orthographic views along View direction
 // and against it), on the body's surface (cases/body_surface_pressure.h) or on the garment,
-// with a colour bar in kPa and mmHg (io/pressure_picture.h); with Every step, also one pair
+// framed round the garment with its edge drawn, with a colour bar in kPa and mmHg that marks
+// pressures above its top (io/pressure_picture.h); with Every step, also one pair
 // per load step, pressure_front_NNNN.png and pressure_back_NNNN.png.
 #include "cases/body_surface_pressure.h"
 #include "cases/parts/part_entries.h"
@@ -48,10 +49,17 @@ class PicturesMeasurement final : public Measurement {
       BodySurfacePressure body = body_surface_pressure(scenario, m);
       surface = {std::move(body.surface.vertices_m), std::move(body.surface.triangles),
                  std::move(body.pressure_Pa), std::move(body.under_garment)};
+      // Framed round the garment, its edge drawn over the body where no more than two of its
+      // edges lie in front of it (the garment lies on the body).
+      surface.frame_m = m.state.positions_m;
+      surface.outline_depth_tolerance_m = 2 * scenario.mean_edge_length_m;
     } else {
       surface = {m.state.positions_m, scenario.mesh.triangles, m.field.pressure_Pa,
                  m.field.contact};
+      surface.grey_means = "not in contact";
+      surface.outline_depth_tolerance_m = scenario.mean_edge_length_m;
     }
+    surface.outline_m = boundary_segments(m.state.positions_m, scenario.mesh.triangles);
     const PictureView back{-settings_.front.direction, settings_.front.up};
     for (const auto& [side, view] : {std::pair<const char*, PictureView>{"front", settings_.front},
                                      std::pair<const char*, PictureView>{"back", back}}) {
