@@ -58,7 +58,8 @@ void write_outline_picture(const std::string& path, const OutlineDrawing& drawin
     numbers.push_back(e.seam);
     edge = &e;
   }
-  std::vector<Vec2> panel_middle(drawing.panels.size(), Vec2::Zero());
+  std::vector<Vec2> panel_middle(drawing.panels.size(), Vec2::Zero()),
+      panel_size(drawing.panels.size(), Vec2::Zero());
   for (std::size_t p = 0; p < drawing.panels.size(); ++p) {
     Vec2 a = Vec2::Constant(std::numeric_limits<double>::infinity()), b = -a;
     for (const auto& line : drawing.panels[p].edges_m)
@@ -66,7 +67,7 @@ void write_outline_picture(const std::string& path, const OutlineDrawing& drawin
         a = a.cwiseMin(x);
         b = b.cwiseMax(x);
       }
-    if (b.x() >= a.x()) panel_middle[p] = 0.5 * (a + b);
+    if (b.x() >= a.x()) panel_middle[p] = 0.5 * (a + b), panel_size[p] = b - a;
   }
   for (auto& [key, entry] : labels) {
     auto& [numbers, edge] = entry;
@@ -86,10 +87,21 @@ void write_outline_picture(const std::string& path, const OutlineDrawing& drawin
                      static_cast<int>(std::lround(at.y() - 22 * inward.y() + 6)), 16,
                      RasterCanvas::Align::centre);
   }
+  // A name in the middle of its panel; below it, smaller, where the panel is narrower than the
+  // name (a binding strip), every other one a line lower so that neighbours do not overlap.
+  int below = 0;
   for (std::size_t p = 0; p < drawing.panels.size(); ++p) {
-    const Vec3 at = to_screen(panel_middle[p]);
-    canvas.draw_text(drawing.panels[p].name, static_cast<int>(std::lround(at.x())),
-                     static_cast<int>(std::lround(at.y())), 24, RasterCanvas::Align::centre);
+    const std::string& name = drawing.panels[p].name;
+    const double name_width_px = 0.6 * 24 * name.size();  // about, for a 24 px font
+    Vec3 at = to_screen(panel_middle[p]);
+    int size = 24;
+    if (scale * panel_size[p].x() < name_width_px) {
+      at = to_screen(panel_middle[p] - Vec2(0, 0.5 * panel_size[p].y()));
+      at.y() += 20 + 16 * (below++ % 2);
+      size = 14;
+    }
+    canvas.draw_text(name, static_cast<int>(std::lround(at.x())),
+                     static_cast<int>(std::lround(at.y())), size, RasterCanvas::Align::centre);
   }
 
   // A 100 mm scale bar, bottom left.

@@ -26,11 +26,14 @@ def time_steps(source):
         return [float(times)]
 
 
-def largest(source, array):
-    """The largest value of a point array over every time step (0 if absent)."""
+def largest(source, array, times):
+    """The largest value of a point array at the given times (0 if absent)."""
     top = 0.0
-    for t in time_steps(source) or [None]:
-        source.UpdatePipeline(t) if t is not None else source.UpdatePipeline()
+    for t in times or [None]:
+        if t is None:
+            source.UpdatePipeline()
+        else:
+            source.UpdatePipeline(t)
         info = source.GetPointDataInformation().GetArray(array)
         if info is not None:
             top = max(top, info.GetRange(0)[1])
@@ -58,9 +61,17 @@ def show_run():
         garment_shown = Calculator(registrationName='garment (mmHg)', Input=garment)
         garment_shown.ResultArrayName = 'pressure_mmHg'
         garment_shown.Function = 'pressure_Pa/%.12g' % SETTINGS['pascal_per_mmHg']
-    coloured = [garment_shown] + ([body] if SETTINGS['body_has_pressure'] else [])
+    body_shown = body
+    if SETTINGS['body_has_pressure']:
+        # Where no garment lies the body's pressure is NaN, drawn grey (the colour map's NaN
+        # colour): apart from where the garment lies and does not press (0, the map's bottom).
+        body_shown = PythonCalculator(registrationName='body (no garment: NaN)', Input=body)
+        body_shown.ArrayAssociation = 'Point Data'
+        body_shown.ArrayName = array
+        body_shown.Expression = 'numpy.where(under_garment > 0, %s, numpy.nan)' % array
+    coloured = [garment_shown] + ([body_shown] if SETTINGS['body_has_pressure'] else [])
 
-    body_display = Show(body, view)
+    body_display = Show(body_shown, view)
     if SETTINGS['body_has_pressure']:
         ColorBy(body_display, ('POINTS', array))
     else:
@@ -72,11 +83,13 @@ def show_run():
 
     # One colour map for both, from zero to the largest pressure of any load step (set after
     # the displays, which would otherwise fit it to the first step's).
-    top = max([largest(s, array) for s in coloured] + [0.0]) or 1.0
+    times = time_steps(garment)
+    top = max([largest(s, array, times) for s in coloured] + [0.0]) or 1.0
     lut = GetColorTransferFunction(array)
     lut.ApplyPreset('Viridis (matplotlib)', True)
     lut.AutomaticRescaleRangeMode = 'Never'
     lut.RescaleTransferFunction(0.0, top)
+    lut.NanColor = [0.78, 0.78, 0.78]
     GetOpacityTransferFunction(array).RescaleTransferFunction(0.0, top)
 
     # The garment's edge (its boundary: hem, openings), so that where it ends shows.
@@ -121,7 +134,6 @@ def show_run():
 
     scene = GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
-    times = time_steps(garment)
     if times:
         scene.AnimationTime = times[-1]
 
@@ -199,6 +211,7 @@ VIEW = show_run()
 if __name__ == '__main__' and started_as_script():
     screenshot = option('--screenshot')
     if screenshot:
-        SaveScreenshot(screenshot, GetLayout(VIEW), ImageResolution=[1280, 720])
+        SaveScreenshot(screenshot, GetLayout(VIEW), ImageResolution=[1280, 720],
+                       FontScaling='Do not scale fonts')
     else:
         Interact(VIEW)

@@ -54,9 +54,16 @@ std::string label(double pressure_Pa) {
 
 void write_pressure_picture(const std::string& path, const PressureSurface& surface,
                             const PictureView& view, const PictureStyle& style) {
-  const std::size_t n = surface.points_m.size();
-  if (surface.pressure_Pa.size() != n || surface.has_pressure.size() != n)
-    throw std::invalid_argument("picture '" + path + "': one pressure per point expected");
+  write_pressure_panels(path, {surface}, {}, view, style);
+}
+
+void write_pressure_panels(const std::string& path, const std::vector<PressureSurface>& panels,
+                           const std::vector<std::string>& captions, const PictureView& view,
+                           const PictureStyle& style) {
+  for (const PressureSurface& surface : panels)
+    if (surface.pressure_Pa.size() != surface.points_m.size() ||
+        surface.has_pressure.size() != surface.points_m.size())
+      throw std::invalid_argument("picture '" + path + "': one pressure per point expected");
   if (!(view.direction.norm() > 0))
     throw std::invalid_argument("picture: the view direction is zero");
   const Vec3 forward = view.direction.normalized();
@@ -68,45 +75,61 @@ void write_pressure_picture(const std::string& path, const PressureSurface& surf
   const auto to_view = [&](const Vec3& x) { return Vec3(x.dot(right), x.dot(up), x.dot(forward)); };
 
   double largest_Pa = 0.0;
-  for (std::size_t v = 0; v < n; ++v)
-    if (surface.has_pressure[v]) largest_Pa = std::max(largest_Pa, surface.pressure_Pa[v]);
+  bool outline = false;
+  for (const PressureSurface& surface : panels) {
+    for (std::size_t v = 0; v < surface.points_m.size(); ++v)
+      if (surface.has_pressure[v]) largest_Pa = std::max(largest_Pa, surface.pressure_Pa[v]);
+    outline = outline || !surface.outline_m.empty();
+  }
   double top_Pa = style.top_pressure_Pa > 0 ? style.top_pressure_Pa : largest_Pa;
   if (!(top_Pa > 0)) top_Pa = 1.0;  // nothing presses: a bar from 0 to 1 Pa
   const bool clipped = largest_Pa > top_Pa;
-  const bool legend = clipped || !surface.outline_m.empty();
+  const bool legend = clipped || outline;
 
-  // The colour bar takes the right-hand side; the surface is fitted into the rest, below the
-  // title and the legend (when there is one).
+  // The colour bar takes the right-hand side; the panels share the rest side by side, below
+  // the title and the legend (when there is one), above their captions (when there are any).
   const int bar_width = 24, label_room = 190, margin = 24, title_room = 40, legend_room = 26;
+  const int caption_room = captions.empty() ? 0 : 24;
   RasterCanvas canvas(style.width, style.height, Vec3(1, 1, 1));
   const int area_x0 = margin, area_x1 = style.width - label_room - bar_width - 2 * margin;
-  const int area_y0 = title_room + (legend ? legend_room : 0), area_y1 = style.height - margin;
+  const int area_y0 = title_room + (legend ? legend_room : 0),
+            area_y1 = style.height - margin - caption_room;
   const Vec3 grey(0.78, 0.78, 0.78);
+  const int n_panels = static_cast<int>(panels.size());
+  const double panel_width = n_panels > 0 ? double(area_x1 - area_x0) / n_panels : 0.0;
 
-  if (n > 0 && area_x1 > area_x0 && area_y1 > area_y0) {
-    std::vector<Vec3> screen(n);
-    Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
-    for (std::size_t v = 0; v < n; ++v) screen[v] = to_view(surface.points_m[v]);
-    for (const Vec3& x : surface.frame_m.empty() ? screen : std::vector<Vec3>{}) {
-      low = low.cwiseMin(x);
-      high = high.cwiseMax(x);
+  // Each panel's extent in the view's plane; one scale for all, so that they compare.
+  std::vector<Vec3> low(panels.size(), Vec3::Constant(1e300)),
+      high(panels.size(), Vec3::Constant(-1e300));
+  double scale = 1e300;
+  for (int k = 0; k < n_panels; ++k) {
+    const PressureSurface& surface = panels[k];
+    for (const Vec3& x : surface.frame_m.empty() ? surface.points_m : surface.frame_m) {
+      low[k] = low[k].cwiseMin(to_view(x));
+      high[k] = high[k].cwiseMax(to_view(x));
     }
-    for (const Vec3& p : surface.frame_m) {
-      low = low.cwiseMin(to_view(p));
-      high = high.cwiseMax(to_view(p));
-    }
-    const double span_x = std::max(high.x() - low.x(), 1e-12),
-                 span_y = std::max(high.y() - low.y(), 1e-12);
+    const double span_x = std::max(high[k].x() - low[k].x(), 1e-12),
+                 span_y = std::max(high[k].y() - low[k].y(), 1e-12);
     // A frame round chosen points keeps a margin round them.
     const double fill = surface.frame_m.empty() ? 1.0 : 0.9;
-    const double scale =
-        fill * std::min((area_x1 - area_x0) / span_x, (area_y1 - area_y0) / span_y);
-    const double centre_x = 0.5 * (area_x0 + area_x1), centre_y = 0.5 * (area_y0 + area_y1);
+    scale = std::min(scale, fill * std::min(panel_width / span_x, (area_y1 - area_y0) / span_y));
+  }
+
+  for (int k = 0; k < n_panels && area_x1 > area_x0 && area_y1 > area_y0; ++k) {
+    const PressureSurface& surface = panels[k];
+    if (surface.points_m.empty()) continue;
+    const int x0 = area_x0 + static_cast<int>(std::lround(k * panel_width)),
+              x1 = area_x0 + static_cast<int>(std::lround((k + 1) * panel_width));
+    canvas.set_clip(x0, area_y0, x1, area_y1);
+    const double centre_x = 0.5 * (x0 + x1), centre_y = 0.5 * (area_y0 + area_y1);
+    const Vec3 middle = 0.5 * (low[k] + high[k]);
     const auto to_screen = [&](const Vec3& s) {
-      return Vec3(centre_x + scale * (s.x() - 0.5 * (low.x() + high.x())),
-                  centre_y - scale * (s.y() - 0.5 * (low.y() + high.y())), s.z());
+      return Vec3(centre_x + scale * (s.x() - middle.x()), centre_y - scale * (s.y() - middle.y()),
+                  s.z());
     };
-    for (Vec3& s : screen) s = to_screen(s);
+    std::vector<Vec3> screen(surface.points_m.size());
+    for (std::size_t v = 0; v < screen.size(); ++v)
+      screen[v] = to_screen(to_view(surface.points_m[v]));
     for (const Triangle& t : surface.triangles) {
       const Vec3& a = surface.points_m[t[0]];
       const Vec3 normal = (surface.points_m[t[1]] - a).cross(surface.points_m[t[2]] - a);
@@ -128,12 +151,9 @@ void write_pressure_picture(const std::string& path, const PressureSurface& surf
     for (const auto& [a, b] : surface.outline_m)
       canvas.draw_line(to_screen(to_view(a)), to_screen(to_view(b)), 2.0, Vec3(0.05, 0.05, 0.05),
                        surface.outline_depth_tolerance_m);
-    // What a frame cut off stays out of the title, the legend and the colour bar.
-    const Vec3 white(1, 1, 1);
-    canvas.fill_rectangle(0, 0, style.width, area_y0, white);
-    canvas.fill_rectangle(0, area_y1, style.width, style.height, white);
-    canvas.fill_rectangle(0, 0, area_x0, style.height, white);
-    canvas.fill_rectangle(area_x1, 0, style.width, style.height, white);
+    if (k < static_cast<int>(captions.size()))
+      canvas.draw_text(captions[k], static_cast<int>(std::lround(centre_x)), area_y1 + 18, 14,
+                       RasterCanvas::Align::centre);
   }
 
   // The colour bar, top pressure at the top, five labelled ticks; above it, when the top cuts
@@ -169,8 +189,8 @@ void write_pressure_picture(const std::string& path, const PressureSurface& surf
     };
     canvas.fill_rectangle(x, y - 12, x + 14, y + 2, grey);
     x += 20;
-    entry(surface.grey_means);
-    if (!surface.outline_m.empty()) {
+    entry(panels.empty() ? std::string("no garment on the skin") : panels.front().grey_means);
+    if (outline) {
       canvas.fill_rectangle(x, y - 6, x + 22, y - 4, Vec3(0.05, 0.05, 0.05));
       x += 28;
       entry("garment's edge");

@@ -28,7 +28,7 @@ struct PressureSurface {
   // The picture is framed round these points (with a 5% margin) when there are any, round the
   // whole surface otherwise; what lies outside the frame is cut off.
   std::vector<Vec3> frame_m;
-  std::string grey_means = "no garment";  // the legend's word for grey
+  std::string grey_means = "no garment on the skin";  // the legend's words for grey
 };
 
 // The edges of `triangles` that belong to one triangle alone (a garment's hem and openings),
@@ -57,5 +57,12 @@ Vec3 viridis(double t);
 // do not match the points; std::runtime_error naming `path` when it cannot be written.
 void write_pressure_picture(const std::string& path, const PressureSurface& surface,
                             const PictureView& view, const PictureStyle& style);
+
+// Several surfaces side by side on one scale and one colour bar (load steps of a run, the
+// paper's Figure 6), each with its caption below it (none if `captions` is empty). Throws as
+// write_pressure_picture.
+void write_pressure_panels(const std::string& path, const std::vector<PressureSurface>& panels,
+                           const std::vector<std::string>& captions, const PictureView& view,
+                           const PictureStyle& style);
 
 }  // namespace tightfit

@@ -70,7 +70,8 @@ view_script = os.path.join(run_dir, 'view.py')
 code = compile(open(view_script).read(), view_script, 'exec')
 exec(code, {'__name__': 'tightfit_view', '__file__': view_script})
 view = GetActiveView()
-SaveScreenshot(screenshot, GetLayout(view), ImageResolution=[1280, 720])
+SaveScreenshot(screenshot, GetLayout(view), ImageResolution=[1280, 720],
+               FontScaling='Do not scale fonts')
 
 rows = table('pressure.csv')
 alphas = [float(r['alpha']) for r in rows]

@@ -13,7 +13,7 @@
 #   DIR        where the runs and the screenshots go (default output/paraview-check):
 #              DIR/CASE/ the run, DIR/CASE.png its screenshot
 #   CASE       cylinder, stocking, top (default all three)
-# About a minute and a half on one core: each run is cut short (coarse meshes, few load steps).
+# About two minutes of CPU: each run is cut short (below), each view about 5 s.
 # Exit status: 0 all checks pass, 1 a check failed, 2 bad usage or a run failed, 77 no pvpython
 # or no xvfb-run (nothing checked; CTest reports the test as skipped).
 set -euo pipefail
@@ -66,13 +66,15 @@ if [[ ! -x $tightfit ]]; then
   exit 2
 fi
 
-# The cases cut short: the cylinder at half resolution over three load steps, the stocking and
-# the top on meshes twice as coarse as their cases'.
+# The cases cut short: the cylinder at half resolution over three load steps; the stocking and
+# the top settled to a looser stop rule (a relative residual of 1e-3, one contact multiplier
+# update, 10 um of penetration; the top on a 25 mm mesh): pictures, not measurements.
+loose="Mass spring/Relative tolerance=1e-3|Mass spring/Contact multiplier updates=1|Mass spring/Gap tolerance=1e-5"
 settings_for() {
   case $1 in
     cylinder) echo "cylinder_T.prm|Garment/Mesh scale=2|Protocol/Final alpha=1.2|Protocol/Alpha increment=0.1" ;;
-    stocking) echo "stocking_female.prm|Garment/Mesh scale=2" ;;
-    top) echo "top_female.prm|Garment/Pattern file/Mesh edge length=0.03|Placement/Dressing/Coarse edge length=0.04" ;;
+    stocking) echo "stocking_female.prm|$loose" ;;
+    top) echo "top_female.prm|Garment/Pattern file/Mesh edge length=0.025|$loose" ;;
   esac
 }
 unit_for() { [[ $1 == stocking ]] && echo mmHg || echo Pa; }
@@ -94,10 +96,23 @@ for name in "${cases[@]}"; do
   fi
   echo "   run: $((SECONDS - start)) s; ParaView:"
   start=$SECONDS
-  if ! xvfb-run -a -s "-screen 0 1280x800x24 -nolisten tcp" "$pvpython" \
-    scripts/paraview-check.py "$out/$name" "$out/$name.png" "$(unit_for "$name")" \
-    2> >(grep -v -e "^$" -e "Warning" >&2); then
+  # pvpython 5.11 on Xvfb now and then fails to open the display as it starts (SIGABRT, "bad X
+  # server connection", status 134): up to three tries.
+  for try in 1 2 3; do
+    set +e
+    xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1280x800x24 -nolisten tcp" "$pvpython" \
+      scripts/paraview-check.py "$out/$name" "$out/$name.png" "$(unit_for "$name")" \
+      >"$out/$name.paraview.log" 2>&1
+    result=$?
+    set -e
+    [[ $result == 134 ]] || break
+    echo "   (pvpython could not open the virtual display, try $try of 3)"
+  done
+  grep -e "^  ok" -e "^  FAIL" "$out/$name.paraview.log" || true
+  if [[ $result != 0 ]]; then
     status=1
+    grep -q "^  FAIL" "$out/$name.paraview.log" ||
+      echo "paraview-check: pvpython stopped (status $result); its output: $out/$name.paraview.log"
   fi
   echo "   ParaView: $((SECONDS - start)) s, screenshot $out/$name.png"
 done
