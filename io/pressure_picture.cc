@@ -110,8 +110,8 @@ void write_pressure_panels(const std::string& path, const std::vector<PressureSu
     }
     const double span_x = std::max(high[k].x() - low[k].x(), 1e-12),
                  span_y = std::max(high[k].y() - low[k].y(), 1e-12);
-    // A frame round chosen points keeps a margin round them.
-    const double fill = surface.frame_m.empty() ? 1.0 : 0.9;
+    // A frame round chosen points, and panels side by side, keep a margin round them.
+    const double fill = surface.frame_m.empty() && n_panels == 1 ? 1.0 : 0.9;
     scale = std::min(scale, fill * std::min(panel_width / span_x, (area_y1 - area_y0) / span_y));
   }
 
