@@ -98,8 +98,13 @@ ViewScriptSettings view_script_settings(const Scenario& scenario) {
     if (m.kind == "angular profile") s.angular_profile_csv = "pressure_theta.csv";
   }
   s.view_up = p.protocol.up;
-  if (!(s.view_direction.cross(s.view_up).norm() > 1e-6 * s.view_up.norm()))
+  if (p.body.kind == "plane") {
+    // A sheet on a plane is seen from above: from the front it is a line.
+    s.view_direction = -p.protocol.up;
+    s.view_up = p.protocol.up.unitOrthogonal();
+  } else if (!(s.view_direction.cross(s.view_up).norm() > 1e-6 * s.view_up.norm())) {
     s.view_direction = s.view_up.unitOrthogonal();
+  }
   return s;
 }
 

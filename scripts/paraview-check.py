@@ -47,17 +47,6 @@ def table(name):
         return list(csv.DictReader(f))
 
 
-def time_steps(source):
-    """The source's times (a list, maybe empty)."""
-    times = source.TimestepValues
-    if times is None:
-        return []
-    try:
-        return [float(t) for t in times]
-    except TypeError:
-        return [float(times)]
-
-
 def point_arrays(source, t):
     source.UpdatePipeline(t)
     info = source.GetPointDataInformation()
@@ -68,7 +57,9 @@ def point_arrays(source, t):
 # The view script as ParaView's shell runs it, but without starting an interaction.
 view_script = os.path.join(run_dir, 'view.py')
 code = compile(open(view_script).read(), view_script, 'exec')
-exec(code, {'__name__': 'tightfit_view', '__file__': view_script})
+view_globals = {'__name__': 'tightfit_view', '__file__': view_script}
+exec(code, view_globals)
+time_steps = view_globals['time_steps']  # the view's own reading of a series' times
 view = GetActiveView()
 SaveScreenshot(screenshot, GetLayout(view), ImageResolution=[1280, 720],
                FontScaling='Do not scale fonts')

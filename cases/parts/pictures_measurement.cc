@@ -60,7 +60,9 @@ class PicturesMeasurement final : public Measurement {
     }
   }
   std::vector<std::string> file_names() const override {
-    return {"pressure_front.png", "pressure_back.png"};
+    std::vector<std::string> names{"pressure_front.png", "pressure_back.png"};
+    if (!settings_.panel_alphas.empty()) names.emplace_back("pressure_steps.png");
+    return names;
   }
 
  private:
