@@ -185,7 +185,7 @@ void write_pressure_panels(const std::string& path, const std::vector<PressureSu
     const int y = title_room + legend_room - 8;
     const auto entry = [&](const std::string& text) {
       canvas.draw_text(text, x, y, 13, RasterCanvas::Align::left);
-      x += 9 * static_cast<int>(text.size()) + 24;
+      x += 7 * static_cast<int>(text.size()) + 24;  // about 7 px a character at 13 px
     };
     canvas.fill_rectangle(x, y - 12, x + 14, y + 2, grey);
     x += 20;
@@ -198,7 +198,7 @@ void write_pressure_panels(const std::string& path, const std::vector<PressureSu
     if (clipped) {
       canvas.fill_rectangle(x, y - 12, x + 14, y + 2, above_top_colour());
       x += 20;
-      entry("above the colour bar");
+      entry("above the bar's top");
     }
   }
   canvas.draw_text(style.title, margin, 26, 16, RasterCanvas::Align::left);
