@@ -1,5 +1,6 @@
 #include "app/pattern_command.h"
 
+#include "io/outline_picture.h"
 #include "io/vtu_writer.h"
 #include "pattern/pattern_file.h"
 #include "pattern/pattern_garment.h"
@@ -7,11 +8,8 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
-#include <sstream>
 
 namespace tightfit {
 
@@ -61,44 +59,30 @@ void write_layout_vtu(const Garment& garment, const std::string& path) {
   vtu.write(path);
 }
 
-// Outlines (grey) and seams (coloured, numbered) drawn by gnuplot; false when it cannot run.
-bool write_outline_png(const Garment& garment, const std::string& dir) {
-  const std::string data = dir + "/outlines.dat", script = dir + "/outlines.gp";
-  std::ofstream d(data);
-  auto polyline = [&](const Panel& panel, const std::vector<int>& vertices) {
-    for (int v : vertices) {
-      const Vec2 x = 1e3 * (panel.rest_positions_m[v] + panel.layout_offset_m);
-      d << x.x() << ' ' << x.y() << '\n';
-    }
-    d << "\n\n";  // a new gnuplot data block
+// The panels' outlines with their names and the seams numbered as listed
+// (io/outline_picture.h).
+void write_outline_png(const Garment& garment, const std::string& file, const std::string& path) {
+  OutlineDrawing drawing;
+  drawing.title = file + ": outlines (grey), seams (coloured, numbered as printed)";
+  const auto layout = [](const Panel& panel, const std::vector<int>& vertices) {
+    std::vector<Vec2> line;
+    for (int v : vertices) line.push_back(panel.rest_positions_m[v] + panel.layout_offset_m);
+    return line;
   };
-  int blocks = 0;
-  for (const Panel& panel : garment.panels)
+  for (const Panel& panel : garment.panels) {
+    OutlineDrawing::Panel drawn{panel.name, {}};
     for (const auto& [name, vertices] : panel.edges)
-      if (name.rfind("seam ", 0) != 0) polyline(panel, vertices), ++blocks;
-  std::ofstream g(script);
-  g << "set terminal png size 1200,900\nset output '" << dir << "/outlines.png'\n"
-    << "set size ratio -1\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\nset xlabel "
-       "'mm'\nset ylabel 'mm'\nunset key\n"
-    << "set title 'outlines (grey) and seams (coloured, numbered)'\n";
-  std::ostringstream plots;
-  plots << "plot '" << data << "' index 0:" << blocks - 1 << " with lines lc rgb '#888888'";
+      if (name.rfind("seam ", 0) != 0) drawn.edges_m.push_back(layout(panel, vertices));
+    drawing.panels.push_back(std::move(drawn));
+  }
   for (std::size_t k = 0; k < garment.seams.size(); ++k) {
     const Seam& seam = garment.seams[k];
-    for (int side = 0; side < 2; ++side) {
-      const Panel& panel = garment.panels[side == 0 ? seam.panel_a : seam.panel_b];
-      const auto& vertices = panel.edges.at(side == 0 ? seam.edge_a : seam.edge_b);
-      polyline(panel, vertices);
-      const Vec2 mid =
-          1e3 * (panel.rest_positions_m[vertices[vertices.size() / 2]] + panel.layout_offset_m);
-      g << "set label '" << k + 1 << "' at " << mid.x() << ',' << mid.y() << " front\n";
-      plots << ", '' index " << blocks++ << " with lines lw 3 lc " << k + 1;
-    }
+    for (const auto& [p, edge] :
+         {std::pair{seam.panel_a, seam.edge_a}, std::pair{seam.panel_b, seam.edge_b}})
+      drawing.seam_edges.push_back({static_cast<int>(k + 1), p, edge,
+                                    layout(garment.panels[p], garment.panels[p].edges.at(edge))});
   }
-  d.close();
-  g << plots.str() << "\n";
-  g.close();
-  return std::system(("gnuplot '" + script + "' > /dev/null 2>&1").c_str()) == 0;
+  write_outline_picture(path, drawing);
 }
 
 }  // namespace
@@ -150,10 +134,8 @@ int pattern_command(const CommandLine& cl, std::ostream& out) {
   std::filesystem::create_directories(dir);
   write_layout_vtu(garment, dir + "/pattern.vtu");
   out << "wrote " << dir << "/pattern.vtu";
-  if (write_outline_png(garment, dir))
-    out << " and " << dir << "/outlines.png\n";
-  else
-    out << "\n(no outlines.png: gnuplot did not run)\n";
+  write_outline_png(garment, file, dir + "/outlines.png");
+  out << " and " << dir << "/outlines.png\n";
   return 0;
 }
 

@@ -6,6 +6,7 @@
 #include "core/interruption.h"
 #include "core/units.h"
 #include "io/csv_table.h"
+#include "io/paraview_view_script.h"
 #include "io/pvd_writer.h"
 #include "io/vtu_share.h"
 #include "io/vtu_writer.h"
@@ -86,6 +87,29 @@ void print_progress(std::ostream& log, const StepMeasurement& m, std::size_t n_s
   log << line << std::endl;
 }
 
+// What the run's ParaView view needs to know (io/paraview_view_script.h): the unit is mmHg in a
+// medical case (one that classes its compression), the angular profile is the angular profile
+// measurement's, the front looks along +y with the protocol's up (bodies face -y, docs/bodies.md).
+ViewScriptSettings view_script_settings(const Scenario& scenario) {
+  const CaseParameters& p = scenario.parameters;
+  ViewScriptSettings s;
+  s.title = p.garment.name + " on " + scenario.body->body().name();
+  s.body_has_pressure = p.output.body_pressure;
+  for (const NamedMeasurement& m : p.measurements) {
+    if (m.kind == "compression class") s.in_mmHg = true;
+    if (m.kind == "angular profile") s.angular_profile_csv = "pressure_theta.csv";
+  }
+  s.view_up = p.protocol.up;
+  if (p.body.kind == "plane") {
+    // A sheet on a plane is seen from above: from the front it is a line.
+    s.view_direction = -p.protocol.up;
+    s.view_up = p.protocol.up.unitOrthogonal();
+  } else if (!(s.view_direction.cross(s.view_up).norm() > 1e-6 * s.view_up.norm())) {
+    s.view_direction = s.view_up.unitOrthogonal();
+  }
+  return s;
+}
+
 }  // namespace
 
 RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
@@ -135,6 +159,7 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
     if (write_series) {
       garment_series = std::make_unique<PvdWriter>(path("garment.pvd"));
       body_series = std::make_unique<PvdWriter>(path("body.pvd"));
+      write_paraview_view_script(path("view.py"), view_script_settings(scenario));
     }
   });
 

@@ -40,7 +40,8 @@ struct RunResult {
 
 // Writes into `output_dir` (created if needed): pressure.csv, solver.log (each step's
 // StepReport::text()), what the case's measurements write, and with Output/Write VTU
-// garment_NNNN.vtu, body_NNNN.vtu, garment.pvd, body.pvd. Progress goes to `log`. A backend
+// garment_NNNN.vtu, body_NNNN.vtu, garment.pvd, body.pvd and view.py, the run's ParaView view
+// (io/paraview_view_script.h). Progress goes to `log`. A backend
 // failure, or a SIGINT/SIGTERM (core/interruption.h), ends the run with completed = false and
 // a note of where it stopped in `log` and solver.log; what was written stays. `on_step`, if
 // set, sees every step that finished with its per-vertex arrays.

@@ -20,7 +20,9 @@ RasterCanvas::RasterCanvas(int width, int height, const Vec3& background)
     : width_(width),
       height_(height),
       rgb_(static_cast<std::size_t>(width) * height, background),
-      depth_(static_cast<std::size_t>(width) * height, std::numeric_limits<double>::infinity()) {
+      depth_(static_cast<std::size_t>(width) * height, std::numeric_limits<double>::infinity()),
+      clip_x1_(width),
+      clip_y1_(height) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("picture: the size must be positive");
 }
 
@@ -34,13 +36,13 @@ void RasterCanvas::fill_triangle(const std::array<Vec3, 3>& p,
   const double area = edge(p[0], p[1], p[2].x(), p[2].y());
   if (!(std::abs(area) > 0)) return;
   const int x0 =
-      std::max(0, static_cast<int>(std::floor(std::min({p[0].x(), p[1].x(), p[2].x()}))));
+      std::max(clip_x0_, static_cast<int>(std::floor(std::min({p[0].x(), p[1].x(), p[2].x()}))));
   const int x1 =
-      std::min(width_ - 1, static_cast<int>(std::ceil(std::max({p[0].x(), p[1].x(), p[2].x()}))));
+      std::min(clip_x1_ - 1, static_cast<int>(std::ceil(std::max({p[0].x(), p[1].x(), p[2].x()}))));
   const int y0 =
-      std::max(0, static_cast<int>(std::floor(std::min({p[0].y(), p[1].y(), p[2].y()}))));
+      std::max(clip_y0_, static_cast<int>(std::floor(std::min({p[0].y(), p[1].y(), p[2].y()}))));
   const int y1 =
-      std::min(height_ - 1, static_cast<int>(std::ceil(std::max({p[0].y(), p[1].y(), p[2].y()}))));
+      std::min(clip_y1_ - 1, static_cast<int>(std::ceil(std::max({p[0].y(), p[1].y(), p[2].y()}))));
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       const double cx = x + 0.5, cy = y + 0.5;
@@ -54,6 +56,33 @@ void RasterCanvas::fill_triangle(const std::array<Vec3, 3>& p,
       depth_[i] = depth;
       rgb_[i] = colour_of(l);
     }
+}
+
+void RasterCanvas::draw_line(const Vec3& a, const Vec3& b, double width, const Vec3& colour,
+                             double depth_tolerance) {
+  // Square stamps every half pixel along the segment.
+  const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
+  const int n = std::max(1, static_cast<int>(std::ceil(2 * length)));
+  const double half = 0.5 * width;
+  for (int k = 0; k <= n; ++k) {
+    const Vec3 p = a + (b - a) * (double(k) / n);
+    const int x0 = std::max(clip_x0_, static_cast<int>(std::floor(p.x() - half + 0.5)));
+    const int x1 = std::min(clip_x1_ - 1, static_cast<int>(std::floor(p.x() + half - 0.5)));
+    const int y0 = std::max(clip_y0_, static_cast<int>(std::floor(p.y() - half + 0.5)));
+    const int y1 = std::min(clip_y1_ - 1, static_cast<int>(std::floor(p.y() + half - 0.5)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+        if (p.z() <= depth_[i] + depth_tolerance) rgb_[i] = colour;
+      }
+  }
+}
+
+void RasterCanvas::set_clip(int x0, int y0, int x1, int y1) {
+  clip_x0_ = std::clamp(x0, 0, width_);
+  clip_y0_ = std::clamp(y0, 0, height_);
+  clip_x1_ = std::clamp(x1, clip_x0_, width_);
+  clip_y1_ = std::clamp(y1, clip_y0_, height_);
 }
 
 void RasterCanvas::fill_rectangle(int x0, int y0, int x1, int y1, const Vec3& colour) {

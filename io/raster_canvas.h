@@ -28,6 +28,14 @@ class RasterCanvas {
   // `colour_of(barycentric coordinates)`.
   void fill_triangle(const std::array<Vec3, 3>& corners,
                      const std::function<Vec3(const Vec3& barycentric)>& colour_of);
+  // The segment from a to b ((x, y, depth) in pixels as for triangles), `width` pixels wide,
+  // on every pixel where what is drawn is not nearer than the segment by more than
+  // `depth_tolerance` (the depth buffer is left as it is).
+  void draw_line(const Vec3& a, const Vec3& b, double width, const Vec3& colour,
+                 double depth_tolerance);
+  // Triangles and lines are drawn inside [x0, x1) x [y0, y1) alone from now on (the whole
+  // canvas at first); rectangles and text anywhere.
+  void set_clip(int x0, int y0, int x1, int y1);
   // A rectangle over everything, [x0, x1) x [y0, y1).
   void fill_rectangle(int x0, int y0, int x1, int y1, const Vec3& colour);
 
@@ -44,6 +52,7 @@ class RasterCanvas {
   int width_, height_;
   std::vector<Vec3> rgb_;
   std::vector<double> depth_;
+  int clip_x0_ = 0, clip_y0_ = 0, clip_x1_, clip_y1_;
 };
 
 }  // namespace tightfit

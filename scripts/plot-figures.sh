@@ -12,7 +12,7 @@
 #     coarse_fine.csv                   both backends on garment 4 5T's coarse and fine meshes
 #                                       (optional; written by validation-report.sh in
 #                                       convergence.csv's columns)
-#   Figure 6 also reads cylinder_T/garment_NNNN.vtu (python3 and gnuplot, no VTK).
+#   Figure 6 is cylinder_T/pressure_steps.png, drawn by the run itself.
 #   FIGURES_DIR  where the PNGs go (default docs/figures)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -54,28 +54,15 @@ gravity=$results/cylinder_T_gravity
 convergence=$results/cylinder_T_convergence/convergence.csv
 
 echo "Figures from $results into $figures:"
-# Figure 6: the garment coloured by pressure at four load steps (settled, about 1.2, 1.5 and
-# the last), on one colour scale topped just above the last step's largest pressure.
-if has_rows "$T/pressure.csv" && ls "$T"/garment_0000.vtu >/dev/null 2>&1; then
-  n_steps=$(($(wc -l <"$T/pressure.csv") - 1))
-  picks="0 $((n_steps / 4)) $((n_steps * 5 / 8)) $((n_steps - 1))"
-  pmax=$(awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next} {m = $c["p_max_Pa"]}
-    END {print 100 * int(1.05 * m / 100 + 1)}' "$T/pressure.csv")
-  files="" labels="" means=""
-  for step in $picks; do
-    dat=$(mktemp --suffix=.dat)
-    python3 $plots/vtu_triangles.py "$(printf '%s/garment_%04d.vtu' "$T" "$step")" "$dat" "$pmax"
-    files="$files $dat"
-    labels="$labels $(awk -F, -v s=$((step + 2)) 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i}
-      NR == s {printf "%.2f", $c["alpha"]}' "$T/pressure.csv")"
-    means="$means $(awk -F, -v s=$((step + 2)) 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i}
-      NR == s {printf "%.0f", $c["p_mean_Pa"]}' "$T/pressure.csv")"
-  done
-  plot fig06_pressure_map pressure_map.gp \
-    "files='$files'; labels='$labels'; means='$means'; pmax=$pmax; name='T'" "$T/pressure.csv"
-  rm -f $files
+# Figure 6: the garment coloured by pressure at four load steps (settled, 1.2, 1.5 and the
+# last) on one colour scale, drawn by tightfit itself (cases/cylinder_T.prm's pictures,
+# Panels at alpha: pressure_steps.png).
+if [[ -s $T/pressure_steps.png ]]; then
+  cp "$T/pressure_steps.png" "$figures/fig06_pressure_map.png"
+  cp "$T/pressure.csv" "$figures/fig06_pressure_map.csv"
+  echo "  fig06_pressure_map.png"
 else
-  echo "  fig06_pressure_map: skipped (no garment VTU in $T)"
+  echo "  fig06_pressure_map: skipped (no pressure_steps.png in $T)"
 fi
 plot fig07_pressure_radius pressure_radius.gp \
   "csv='$T/pressure.csv'; name='T'" "$T/pressure.csv"

@@ -131,8 +131,7 @@ ends); Eq. 7 is the paper's \`P = Et (1 - 1/alpha) / R0\`.
 
 The paper shows its garment coloured by pressure as the cylinder grows: the colour rises
 with the radius and is even round the cylinder. tightfit's garment T (default backend), drawn
-from the run's garment VTU files (\`scripts/plots/vtu_triangles.py\` reads them, gnuplot
-draws the triangles): the same even colour at each step, rising with alpha.
+by the run itself (its \`pictures\` measurement, \`Panels at alpha\`: \`pressure_steps.png\`): the same even colour at each step, rising with alpha.
 
 $(png fig06_pressure_map "Garment T coloured by contact pressure at four load steps")
 

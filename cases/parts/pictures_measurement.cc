@@ -1,14 +1,19 @@
 // Measurements/List: pictures. pressure_front.png and pressure_back.png: the pressure map of the
 // last load step seen from the front and from the back (orthographic views along View direction
 // and against it), on the body's surface (cases/body_surface_pressure.h) or on the garment,
-// with a colour bar in kPa and mmHg (io/pressure_picture.h); with Every step, also one pair
-// per load step, pressure_front_NNNN.png and pressure_back_NNNN.png.
+// framed round the garment with its edge drawn, with a colour bar in kPa and mmHg that marks
+// pressures above its top (io/pressure_picture.h); with Every step, also one pair
+// per load step, pressure_front_NNNN.png and pressure_back_NNNN.png; with Panels at alpha,
+// pressure_steps.png, chosen load steps side by side.
 #include "cases/body_surface_pressure.h"
 #include "cases/parts/part_entries.h"
 #include "cases/step_measurement.h"
 #include "io/pressure_picture.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace tightfit {
 
@@ -18,6 +23,7 @@ struct PictureSettings {
   PictureView front;
   bool on_body = true;
   bool every_step = false;
+  std::vector<double> panel_alphas;  // pressure_steps.png: the steps nearest these alphas
   PictureStyle style;
 };
 
@@ -27,7 +33,15 @@ class PicturesMeasurement final : public Measurement {
 
   void after_step(const Scenario& scenario, const StepMeasurement& m,
                   const RunFiles& files) override {
-    if (!settings_.every_step || !files.write_tables) return;
+    if (!files.write_tables) return;
+    // The steps' arrays are released once written: a panel's surface is copied now.
+    if (is_panel_step(scenario, m.step)) {
+      panels_.push_back(surface_of(scenario, m));
+      char caption[96];
+      std::snprintf(caption, sizeof caption, "alpha %.3g, mean %.0f Pa", m.alpha, m.p_mean_Pa());
+      captions_.emplace_back(caption);
+    }
+    if (!settings_.every_step) return;
     char suffix[32];
     std::snprintf(suffix, sizeof suffix, "_%04d", m.step);
     draw(scenario, m, files, suffix);
@@ -35,23 +49,58 @@ class PicturesMeasurement final : public Measurement {
   void after_run(const Scenario& scenario, const std::vector<StepMeasurement>& steps,
                  const RunFiles& files) override {
     if (!steps.empty() && files.write_tables) draw(scenario, steps.back(), files, "");
+    if (!panels_.empty() && files.write_tables) {
+      PictureStyle style = settings_.style;
+      style.width = std::max(style.width, 260 * static_cast<int>(panels_.size()) + 260);
+      style.title = scenario.parameters.garment.name + ": " +
+                    (settings_.on_body ? "on the body" : "the garment") + " at " +
+                    std::to_string(panels_.size()) + " load steps";
+      write_pressure_panels(files.path("pressure_steps.png"), panels_, captions_, settings_.front,
+                            style);
+    }
   }
   std::vector<std::string> file_names() const override {
-    return {"pressure_front.png", "pressure_back.png"};
+    std::vector<std::string> names{"pressure_front.png", "pressure_back.png"};
+    if (!settings_.panel_alphas.empty()) names.emplace_back("pressure_steps.png");
+    return names;
   }
 
  private:
-  void draw(const Scenario& scenario, const StepMeasurement& m, const RunFiles& files,
-            const std::string& suffix) const {
+  // The step nearest one of the panel alphas (each alpha its nearest step).
+  bool is_panel_step(const Scenario& scenario, int step) const {
+    for (double alpha : settings_.panel_alphas) {
+      int nearest = 0;
+      for (std::size_t k = 0; k < scenario.alphas.size(); ++k)
+        if (std::abs(scenario.alphas[k] - alpha) < std::abs(scenario.alphas[nearest] - alpha))
+          nearest = static_cast<int>(k);
+      if (nearest == step) return true;
+    }
+    return false;
+  }
+
+  PressureSurface surface_of(const Scenario& scenario, const StepMeasurement& m) const {
     PressureSurface surface;
     if (settings_.on_body) {
       BodySurfacePressure body = body_surface_pressure(scenario, m);
       surface = {std::move(body.surface.vertices_m), std::move(body.surface.triangles),
                  std::move(body.pressure_Pa), std::move(body.under_garment)};
+      // Framed round the garment, its edge drawn over the body where no more than two of its
+      // edges lie in front of it (the garment lies on the body).
+      surface.frame_m = m.state.positions_m;
+      surface.outline_depth_tolerance_m = 2 * scenario.mean_edge_length_m;
     } else {
       surface = {m.state.positions_m, scenario.mesh.triangles, m.field.pressure_Pa,
                  m.field.contact};
+      surface.grey_means = "not in contact";
+      surface.outline_depth_tolerance_m = scenario.mean_edge_length_m;
     }
+    surface.outline_m = boundary_segments(m.state.positions_m, scenario.mesh.triangles);
+    return surface;
+  }
+
+  void draw(const Scenario& scenario, const StepMeasurement& m, const RunFiles& files,
+            const std::string& suffix) const {
+    const PressureSurface surface = surface_of(scenario, m);
     const PictureView back{-settings_.front.direction, settings_.front.up};
     for (const auto& [side, view] : {std::pair<const char*, PictureView>{"front", settings_.front},
                                      std::pair<const char*, PictureView>{"back", back}}) {
@@ -68,6 +117,8 @@ class PicturesMeasurement final : public Measurement {
   }
 
   PictureSettings settings_;
+  std::vector<PressureSurface> panels_;
+  std::vector<std::string> captions_;
 };
 
 }  // namespace
@@ -91,6 +142,10 @@ PartEntry<MeasurementMaker> pictures_measurement_entry() {
     prm.declare_bool("Every step", false,
                      "Also draw pressure_front_NNNN.png and pressure_back_NNNN.png at every load "
                      "step.");
+    prm.declare_text("Panels at alpha", "",
+                     "Also draw pressure_steps.png: the load steps nearest these alphas "
+                     "(comma-separated, -) side by side on one scale and one colour bar, as the "
+                     "paper's Figure 6. Empty: none.");
     prm.declare_integer("Width", 800, 320, 8000, "Picture width (pixels).");
     prm.declare_integer("Height", 600, 200, 8000, "Picture height (pixels).");
     prm.declare_double("Top pressure", 0, 0, ParameterTree::unbounded,
@@ -107,6 +162,18 @@ PartEntry<MeasurementMaker> pictures_measurement_entry() {
       throw std::invalid_argument("Up: zero or along View direction");
     s.on_body = prm.get("Surface") == "body";
     s.every_step = prm.get_bool("Every step");
+    for (const std::string& word : prm.get_list("Panels at alpha")) {
+      std::size_t used = 0;
+      double alpha = 0;
+      try {
+        alpha = std::stod(word, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != word.size() || !(alpha > 0))
+        throw std::invalid_argument("Panels at alpha: '" + word + "' is not a positive number");
+      s.panel_alphas.push_back(alpha);
+    }
     s.style.width = prm.get_integer("Width");
     s.style.height = prm.get_integer("Height");
     s.style.top_pressure_Pa = prm.get_double("Top pressure");

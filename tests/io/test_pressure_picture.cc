@@ -1,7 +1,8 @@
 // Pressure pictures (io/pressure_picture.h, io/raster_canvas.h), read back by VTK's own PNG
 // reader: the colour of a face-on surface is the colour map's at its pressure, a surface where
-// no garment lies is grey, nearer triangles hide farther ones, and the back view mirrors the
-// front one.
+// no garment lies is grey, nearer triangles hide farther ones, the back view mirrors the front
+// one, pressure above the colour bar's top is marked, a frame cuts the view and outlines are
+// drawn where not hidden.
 #include "io/pressure_picture.h"
 #include "io/raster_canvas.h"
 #include "scratch_dir.h"
@@ -88,6 +89,44 @@ TEST(RasterCanvas, NearerTriangleHidesFartherOneWhicheverIsDrawnFirst) {
     EXPECT_EQ(canvas.pixel(30, 5), Vec3(1, 0, 0));  // the near one alone
     EXPECT_EQ(canvas.pixel(38, 30), Vec3::Ones());  // neither
   }
+}
+
+TEST_F(PressurePicture, PressureAboveTheTopIsMarkedInTheSurfaceAndTheBar) {
+  PictureStyle style;
+  style.top_pressure_Pa = 1000;  // below the 2000 Pa drawn
+  write_pressure_picture(path("clipped.png"), square(2000), PictureView{}, style);
+  // A legend row (26 px) now lies under the title: the drawing area is rows 66..576, the square
+  // 510 px, centred at (281, 321). 200 px right of the centre: above the top, in its colour.
+  expect_colour(colour_at(path("clipped.png"), 281 + 200, 321), above_top_colour(), "pressed half");
+  // The swatch above the bar (rows 66..90) and the bar moved down to start at row 96.
+  expect_colour(colour_at(path("clipped.png"), 574, 78), above_top_colour(), "swatch");
+  expect_colour(colour_at(path("clipped.png"), 574, 96), viridis(1.0), "bar's top");
+}
+
+TEST_F(PressurePicture, FramedRoundChosenPointsWithTheOutlineOnTop) {
+  PressureSurface s = square(2000);
+  const auto outline = boundary_segments(s.points_m, s.triangles);
+  EXPECT_EQ(outline.size(), 6u);  // the square's four sides, two of them in two halves
+  s.outline_m = outline;
+  // A segment 1 m behind the square (farther than the tolerance): hidden.
+  s.outline_m.push_back({Vec3(0.6, 0.5, -1.0), Vec3(0.9, 0.5, -1.0)});
+  s.outline_depth_tolerance_m = 0.1;
+  s.frame_m = {Vec3(0.5, 0, 0), Vec3(1, 1, 0)};  // the pressed half
+  PictureStyle style;
+  style.top_pressure_Pa = 4000;
+  write_pressure_picture(path("framed.png"), s, PictureView{}, style);
+  // The frame (0.5 x 1 m) fills 90% of the 514 x 510 px area below the legend: 459 px a metre,
+  // its centre (0.75, 0.5) m at (281, 321). The square's right side (x = 1 m) is at column
+  // 395.75: the 2 px line covers columns 395 and 396.
+  for (int x : {395, 396})
+    expect_colour(colour_at(path("framed.png"), x, 321), Vec3(0.05, 0.05, 0.05), "outline");
+  // Column 300 (x = 0.79 m): the pressed half, the hidden segment not drawn over it.
+  expect_colour(colour_at(path("framed.png"), 300, 321), viridis(0.5), "pressed half");
+  // Column 30 (x = 0.20 m): the half without garment (grey below x = 0.25 m, where the
+  // corners without pressure weigh more than half), inside the area from column 24.
+  expect_colour(colour_at(path("framed.png"), 30, 321), Vec3(0.78, 0.78, 0.78), "grey half");
+  // Column 10, left of the area (x = 0.16 m, on the square): cut off, white.
+  expect_colour(colour_at(path("framed.png"), 10, 321), Vec3(1, 1, 1), "outside the frame");
 }
 
 TEST_F(PressurePicture, UnwritableFolderIsReported) {
