@@ -67,13 +67,19 @@ def check_page(root, page, problems):
             cache[target] = headings(target)
         return cache[target]
 
+    fenced = False
     for number, line in enumerate(text.splitlines(), start=1):
-        for target in LINK.findall(line):
+        if line.startswith("```"):
+            fenced = not fenced
+        reported = set()
+        # In a code block `[...](...)` is code (a C++ lambda), not a link.
+        for target in ([] if fenced else LINK.findall(line)):
             if re.match(r"^[a-z]+:", target):
                 continue
             path, _, anchor = target.partition("#")
             resolved = (page.parent / path).resolve() if path else page
             if not resolved.exists():
+                reported.add(pathlib.Path(path).name)
                 problems.append(f"{where}:{number}: link to '{target}': no such file")
             elif anchor and resolved.suffix == ".md":
                 if anchor not in {slug(t) for t in titles_of(resolved)}:
@@ -81,11 +87,14 @@ def check_page(root, page, problems):
                                     f"{path or where} has no heading '#{anchor}'")
         for match in PATH.finditer(line):
             path = match.group(1)
-            if has_placeholder(path) or line[match.end():match.end() + 1] in ("*", "<", "{"):
+            after = line[match.end():match.end() + 2]
+            if has_placeholder(path) or after[:1] in ("*", "<", "{") or after == ".*":
+                continue
+            if pathlib.Path(path).name in reported:
                 continue
             if not (root / path).exists():
                 problems.append(f"{where}:{number}: cites '{path}', which does not exist")
-        for name in PAGE.findall(line):
+        for name in set(PAGE.findall(line)) - reported:
             if not ((page.parent / name).exists() or (root / "docs" / name).exists()
                     or (root / name).exists()):
                 problems.append(f"{where}:{number}: cites the page '{name}', which does not exist")
