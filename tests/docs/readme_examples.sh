@@ -8,7 +8,7 @@
 # takes minutes: it runs only with "long" (the test docs_readme_examples_long, which
 # -DTIGHTFIT_LONG_EXAMPLES=ON registers), the others only with "quick". The block with
 # scripts/paper-study.sh and scripts/test.sh is skipped: it installs and builds, which is how
-# this test came to run.
+# this test came to run. LIST_ONLY=1 in the environment lists the commands without running them.
 set -u
 source_dir=$1
 build_dir=$2
@@ -29,7 +29,15 @@ commands=$(awk '
   {
     line = $0
     comment = ""
-    if (match(line, /[ \t]#[^"]*$/)) { comment = substr(line, RSTART); line = substr(line, 1, RSTART - 1) }
+    # A comment starts at a "#" after a blank, outside double quotes.
+    quoted = 0
+    for (i = 1; i <= length(line); i++) {
+      ch = substr(line, i, 1)
+      if (ch == "\"") quoted = !quoted
+      else if (ch == "#" && !quoted && (i == 1 || substr(line, i - 1, 1) ~ /[ \t]/)) {
+        comment = substr(line, i); line = substr(line, 1, i - 1); break
+      }
+    }
     if (comment ~ /[0-9] *min/) long = 1
     sub(/[ \t]+$/, "", line)
     if (line ~ /\\$/) { joined = joined substr(line, 1, length(line) - 1) " "; next }
@@ -50,6 +58,7 @@ while IFS=$'\t' read -r kind command; do
     continue
   fi
   echo "== $command"
+  if [ -n "${LIST_ONLY:-}" ]; then ran=$((ran + 1)); continue; fi
   start=$(date +%s)
   if ! (cd "$scratch" && bash -c "$command") >"$scratch/last.log" 2>&1; then
     echo "FAILED (the README's command, run in $scratch):"
