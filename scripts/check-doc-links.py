@@ -98,16 +98,29 @@ def check_page(root, page, problems):
             if not ((page.parent / name).exists() or (root / "docs" / name).exists()
                     or (root / name).exists()):
                 problems.append(f"{where}:{number}: cites the page '{name}', which does not exist")
-        for name, title in SECTION.findall(line):
-            target = root / name if "/" in name else page.parent / name
-            if not target.exists():
-                target = root / "docs" / name
-            if not target.exists():
-                continue  # reported above
-            wanted = title.lstrip("# ").strip().lower()
-            if not any(t.lower().startswith(wanted) for t in titles_of(target)):
-                problems.append(f"{where}:{number}: cites the section \"{title}\" of {name}, "
-                                f"which has no such heading")
+
+    # Cited sections may run across a line break: read them in the text with lines joined.
+    joined = re.sub(r"\s*\n\s*", " ", text)
+    line_starts = [0]
+    for line in text.splitlines(keepends=True):
+        line_starts.append(line_starts[-1] + len(line))
+    # The offset of each joined character in `text`, to name the line a citation starts on.
+    offsets, j = [], 0
+    for match in re.finditer(r"\s*\n\s*|.", text, flags=re.S):
+        offsets.append(match.start())
+    for match in SECTION.finditer(joined):
+        name, title = match.group(1), match.group(2)
+        target = root / name if "/" in name else page.parent / name
+        if not target.exists():
+            target = root / "docs" / name
+        if not target.exists():
+            continue  # reported above
+        wanted = title.lstrip("# ").strip().lower()
+        if not any(t.lower().startswith(wanted) for t in titles_of(target)):
+            start = offsets[match.start()] if match.start() < len(offsets) else len(text)
+            number = sum(1 for s in line_starts[1:] if s <= start) + 1
+            problems.append(f"{where}:{number}: cites the section \"{title}\" of {name}, "
+                            f"which has no such heading")
 
 
 def check_code(root, problems):
