@@ -8,7 +8,8 @@
 # takes minutes: it runs only with "long" (the test docs_readme_examples_long, which
 # -DTIGHTFIT_LONG_EXAMPLES=ON registers), the others only with "quick". The block with
 # scripts/paper-study.sh and scripts/test.sh is skipped: it installs and builds, which is how
-# this test came to run. LIST_ONLY=1 in the environment lists the commands without running them.
+# this test came to run. In the environment, LIST_ONLY=1 lists the commands without running them
+# and FROM=N starts at the N-th command of the kind (to finish a run that was stopped).
 set -u
 source_dir=$1
 build_dir=$2
@@ -57,6 +58,8 @@ while IFS=$'\t' read -r kind command; do
     skipped=$((skipped + 1))
     continue
   fi
+  index=$((${index:-0} + 1))
+  if [ "$index" -lt "${FROM:-1}" ]; then continue; fi
   echo "== $command"
   if [ -n "${LIST_ONLY:-}" ]; then ran=$((ran + 1)); continue; fi
   start=$(date +%s)
