@@ -63,7 +63,8 @@ while IFS=$'\t' read -r kind command; do
   echo "== $command"
   if [ -n "${LIST_ONLY:-}" ]; then ran=$((ran + 1)); continue; fi
   start=$(date +%s)
-  if ! (cd "$scratch" && bash -c "$command") >"$scratch/last.log" 2>&1; then
+  # stdin from /dev/null: a command that reads it (mpirun does) must not eat the list.
+  if ! (cd "$scratch" && bash -c "$command") </dev/null >"$scratch/last.log" 2>&1; then
     echo "FAILED (the README's command, run in $scratch):"
     echo "  $command"
     tail -n 30 "$scratch/last.log"
