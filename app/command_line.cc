@@ -1,5 +1,7 @@
 #include "app/command_line.h"
 
+#include "core/closest_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -18,12 +20,14 @@ Usage:
       Runs the case on both backends on the same mesh and writes compare.csv.
   tightfit convergence CASE.prm [--levels N] [--output DIR] [--set ...]
       Runs the case on N meshes, halving the edge length each time, on both backends.
-  tightfit pattern FILE [--edge-length L] [--seams "..."] [--folds "..."] [--output DIR]
-      Reads a sewing pattern (.svg, .json, .dxf), prints its panels, edge lengths and seam
-      length mismatches, meshes it (target edge length L in m, default 0.01) and writes the
-      meshed panels (pattern.vtu) and a drawing of the outlines and seams (outlines.png) into
-      DIR (default output/pattern). --seams and --folds add declarations as in the case file's
-      Garment/Pattern file section (docs/patterns.md).
+  tightfit pattern FILE [--edge-length L] [--seams "..."] [--folds "..."] [--size S]
+                        [--units mm|cm|inch] [--output DIR]
+      Reads a sewing pattern (.svg, .json, .dxf), prints its sizes (a graded DXF), panels,
+      edge lengths and seam length mismatches, meshes it (target edge length L in m, default
+      0.01) and writes the meshed panels (pattern.vtu) and a drawing of the outlines and seams
+      (outlines.png) into DIR (default output/pattern). --seams, --folds, --size and --units
+      are the case file's Garment/Pattern file entries Seams, Fold edges, Size and Units
+      (docs/patterns.md).
   tightfit girths CASE.prm --near X,Y,Z --heights H1,H2,... [--axis X,Y,Z] [--set ...]
       Slices the case's body by planes normal to the axis (default 0,0,1) at each height (m,
       in the run's coordinates) and prints, for the loop round the point --near (a leg, not
@@ -59,6 +63,16 @@ std::vector<double> number_list(const std::string& option, const std::string& te
   return numbers;
 }
 
+// The options each command takes, for the message that refuses another.
+std::vector<std::string> options_of(const std::string& command) {
+  std::vector<std::string> options{"--output", "--set"};
+  if (command == "convergence") options.push_back("--levels");
+  if (command == "pattern")
+    options.insert(options.end(), {"--edge-length", "--seams", "--folds", "--size", "--units"});
+  if (command == "girths") options.insert(options.end(), {"--near", "--heights", "--axis"});
+  return options;
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv) {
@@ -78,14 +92,17 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     cl.command = "print-parameters";
     for (std::size_t i = 1; i < args.size(); ++i) {
       if (args[i] != "--prm" && args[i] != "--json")
-        throw UsageError("--print-parameters takes --prm or --json, not '" + args[i] + "'");
+        throw UsageError("--print-parameters takes --prm or --json, not '" + args[i] + "'" +
+                         did_you_mean(args[i], {"--prm", "--json"}));
       cl.parameters_format = args[i].substr(2);
     }
     return cl;
   }
-  if (first != "run" && first != "compare" && first != "convergence" && first != "pattern" &&
-      first != "girths")
-    throw UsageError("unknown command '" + first + "'");
+  const std::vector<std::string> commands{"run",     "compare",  "convergence",
+                                          "pattern", "girths",   "--print-parameters",
+                                          "--help",  "--version"};
+  if (std::find(commands.begin(), commands.begin() + 5, first) == commands.begin() + 5)
+    throw UsageError("unknown command '" + first + "'" + did_you_mean(first, commands));
   cl.command = first;
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -117,6 +134,12 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
       cl.pattern_seams = value();
     } else if (first == "pattern" && a == "--folds") {
       cl.pattern_folds = value();
+    } else if (first == "pattern" && a == "--size") {
+      cl.pattern_size = value();
+    } else if (first == "pattern" && a == "--units") {
+      cl.pattern_units = value();
+      if (cl.pattern_units != "mm" && cl.pattern_units != "cm" && cl.pattern_units != "inch")
+        throw UsageError("--units must be mm, cm or inch, not '" + cl.pattern_units + "'");
     } else if (first == "girths" && (a == "--near" || a == "--heights" || a == "--axis")) {
       std::vector<double>& list = a == "--near"      ? cl.girths_near
                                   : a == "--heights" ? cl.girths_heights
@@ -124,7 +147,8 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
       list = number_list(a, value());
       if (a != "--heights" && list.size() != 3) throw UsageError(a + " needs three numbers x,y,z");
     } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("unknown option '" + a + "'");
+      throw UsageError("unknown option '" + a + "' of " + first +
+                       did_you_mean(a, options_of(first)));
     } else {
       cl.case_files.push_back(a);
     }

@@ -19,6 +19,8 @@ struct CommandLine {
   // pattern: target mesh edge length (m), seams and fold edges besides the file's.
   double pattern_edge_length_m = 0.01;
   std::string pattern_seams, pattern_folds;
+  // pattern: the size of a graded file and the unit of a file that names none (DXF).
+  std::string pattern_size, pattern_units;
   // girths: the point the limb's loop must enclose, the slice heights and their direction.
   std::vector<double> girths_near, girths_heights, girths_axis = {0.0, 0.0, 1.0};
   int rank = 0;  // this process among the MPI ranks

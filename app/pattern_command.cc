@@ -105,7 +105,18 @@ bool write_outline_png(const Garment& garment, const std::string& dir) {
 
 int pattern_command(const CommandLine& cl, std::ostream& out) {
   const std::string& file = cl.case_files.front();
-  pattern::Pattern p = pattern::read_pattern_file(file);
+  // A graded file: its sizes first, so that a refusal to choose one still shows them.
+  const std::vector<std::string> sizes = pattern::pattern_file_sizes(file);
+  if (!sizes.empty()) {
+    out << "sizes in " << file << ":";
+    for (const std::string& size : sizes) out << ' ' << size;
+    out << (cl.pattern_size.empty() ? "" : " (cut: " + cl.pattern_size + ")") << '\n';
+    out.flush();
+  }
+  pattern::PatternFileOptions file_options;
+  file_options.size = cl.pattern_size;
+  file_options.units = cl.pattern_units;
+  pattern::Pattern p = pattern::read_pattern_file(file, file_options);
   for (const auto& seam : pattern::parse_seam_list(cl.pattern_seams)) p.seams.push_back(seam);
   pattern::declare_folds(p, cl.pattern_folds);
   pattern::validate(p);

@@ -2,6 +2,7 @@
 // deal.II (its ParameterHandler), so that changing a case does not rebuild the heavy headers.
 #include "cases/case_parameters.h"
 
+#include "cases/parameter_names.h"
 #include "cases/parameter_tree.h"
 #include "cases/scenario_parts.h"
 #include "core/backend_registry.h"
@@ -9,6 +10,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -29,15 +33,30 @@ Vec3 parse_vec3(const std::string& text) {
 
 const Patterns::List vec3_pattern(Patterns::Double(), 3, 3, ",");
 
+// A default as a person writes it: the shortest decimal that reads back as the same double
+// ("0.24", not deal.II's "0.23999999999999999"), or 15 significant digits where that is shorter
+// (a default computed from other numbers, 6864.655 rather than 6864.655000000001: one unit in
+// the last place, and the run reads the printed text back).
+std::string shortest_decimal(double value) {
+  char text[32];
+  const auto written = std::to_chars(text, text + sizeof text, value);
+  const std::string exact(text, written.ptr);
+  std::snprintf(text, sizeof text, "%.15g", value);
+  return std::string(text).size() < exact.size() ? std::string(text) : exact;
+}
+
 // The scenario parts' view of the handler (cases/parameter_tree.h).
 class HandlerTree final : public ParameterTree {
  public:
-  explicit HandlerTree(ParameterHandler& prm) : prm_(prm) {}
+  explicit HandlerTree(ParameterHandler& prm, const std::string& case_file_directory = "")
+      : prm_(prm) {
+    case_directory = case_file_directory;
+  }
   void enter_subsection(const std::string& name) override { prm_.enter_subsection(name); }
   void leave_subsection() override { prm_.leave_subsection(); }
   void declare_double(const std::string& name, double default_value, double min, double max,
                       const std::string& documentation) override {
-    prm_.declare_entry(name, dealii::Utilities::to_string(default_value),
+    prm_.declare_entry(name, shortest_decimal(default_value),
                        max == unbounded ? Patterns::Double(min) : Patterns::Double(min, max),
                        documentation);
   }
@@ -291,9 +310,9 @@ void declare_case_parameters(ParameterHandler& prm) {
 
 namespace {
 
-CaseParameters parse_case_parameters(ParameterHandler& prm) {
+CaseParameters parse_case_parameters(ParameterHandler& prm, const std::string& case_directory) {
   CaseParameters c;
-  HandlerTree tree(prm);
+  HandlerTree tree(prm, case_directory);
   prm.enter_subsection("Garment");
   c.garment.kind = prm.get("Kind");
   c.garment.make = garment_kinds().parse_part(tree, c.garment.kind);
@@ -419,10 +438,29 @@ std::string user_message(const std::exception& e) {
   return folded;
 }
 
+// Every subsection and entry declared, for the messages that refuse an unknown one.
+DeclaredParameters declared_parameters(const ParameterHandler& prm) {
+  std::stringstream short_prm;
+  prm.print_parameters(short_prm, ParameterHandler::ShortPRM);
+  return DeclaredParameters(short_prm);
+}
+
+// The text between `before` and `after` in `text`; "" when either is missing.
+std::string between(const std::string& text, const std::string& before, const std::string& after) {
+  const auto begin = text.find(before);
+  if (begin == std::string::npos) return "";
+  const auto end = text.find(after, begin + before.size());
+  if (end == std::string::npos) return "";
+  return text.substr(begin + before.size(), end - begin - before.size());
+}
+
+const char* const lists_every_entry = " (tightfit --print-parameters lists every entry)";
+
 }  // namespace
 
 CaseFile::CaseFile() : prm_(std::make_unique<ParameterHandler>()) {
   declare_case_parameters(*prm_);
+  declared_ = std::make_unique<DeclaredParameters>(declared_parameters(*prm_));
 }
 
 CaseFile::~CaseFile() = default;
@@ -441,30 +479,61 @@ void CaseFile::set(const std::string& assignment) {
     if (slash == std::string::npos) break;
     start = slash + 1;
   }
+  const std::string where = "--set \"" + assignment + "\": ";
+  // An unknown subsection or entry, said with the closest declared names before deal.II sees
+  // it (its enter_subsection would declare a new, empty subsection).
+  std::vector<std::string> subsections;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string unknown = i + 1 < parts.size()
+                                    ? declared_->check_subsection(subsections, parts[i])
+                                    : declared_->check_entry(subsections, parts[i]);
+    if (!unknown.empty()) throw std::runtime_error(where + unknown + lists_every_entry);
+    subsections.push_back(parts[i]);
+  }
   int depth = 0;
   try {
     for (std::size_t i = 0; i + 1 < parts.size(); ++i, ++depth) prm.enter_subsection(parts[i]);
     prm.set(parts.back(), value);
   } catch (const std::exception& e) {
     for (; depth > 0; --depth) prm.leave_subsection();
-    throw std::runtime_error("--set \"" + assignment + "\": " + user_message(e) +
-                             " (tightfit --print-parameters lists every entry)");
+    // A value the entry's pattern refuses: for a selection, the closest of its values.
+    const std::string refusal = selection_refusal(value, user_message(e));
+    throw std::runtime_error(where + (refusal.empty() ? user_message(e) : refusal));
   }
   for (; depth > 0; --depth) prm.leave_subsection();
 }
 
 void CaseFile::read(const std::string& path, const std::vector<std::string>& overrides) {
-  if (!std::ifstream(path)) throw std::runtime_error("cannot open the case file '" + path + "'");
+  if (!std::ifstream(path))
+    throw std::runtime_error("cannot open the case file '" + path +
+                             "' (from the working directory " +
+                             std::filesystem::current_path().string() + ")");
+  case_directory_ = std::filesystem::path(path).parent_path().string();
   try {
     prm_->parse_input(path, "", false, false);
   } catch (const std::exception& e) {
-    throw std::runtime_error("case file '" + path + "': " + user_message(e));
+    // deal.II stops at the first line it cannot use. An unknown subsection or entry is said
+    // with the closest declared names; a value its pattern refuses, for a selection, with the
+    // closest of its values.
+    const std::string where = "case file '" + path + "', ";
+    const std::string unknown = declared_->first_unknown_name_in(path);
+    if (!unknown.empty()) throw std::runtime_error(where + unknown + lists_every_entry);
+    const std::string message = user_message(e);
+    const std::string line = between(message, "Line <", ">");
+    const std::string rest = between(message + "\n", ">: ", "\n");
+    if (line.empty() || rest.empty())
+      throw std::runtime_error("case file '" + path + "': " + message);
+    const std::string value = between(message, "The entry value ", " for the entry named");
+    const std::string entry = between(message, " for the entry named ", " does not match");
+    const std::string refusal = selection_refusal(value, message);
+    throw std::runtime_error(where + "line " + line + ": " +
+                             (refusal.empty() ? rest : entry + ": " + refusal));
   }
   for (const auto& assignment : overrides) set(assignment);
 }
 
 CaseParameters CaseFile::parameters() const {
-  return parse_case_parameters(*prm_);
+  return parse_case_parameters(*prm_, case_directory_);
 }
 
 std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,

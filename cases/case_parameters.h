@@ -25,6 +25,8 @@ class ParameterHandler;
 
 namespace tightfit {
 
+class DeclaredParameters;
+
 // What each scenario part's parser returns (cases/part_registry.h): its settings, ready to
 // build the part. Plain functions, so that a case's parameters can be copied (a convergence
 // study builds one scenario per mesh level).
@@ -143,7 +145,8 @@ class CaseFile {
   CaseFile& operator=(const CaseFile&) = delete;
 
   // Reads `path` and applies each override in turn. Throws std::runtime_error naming the
-  // file, line or entry at fault (a missing file, an unknown entry, a value out of range).
+  // file, line or entry at fault (a missing file, an unknown entry, a value out of range), with
+  // the closest declared names for an unknown subsection, entry or selection value.
   void read(const std::string& path, const std::vector<std::string>& overrides);
   // Applies one "Path/To/Entry=value" override.
   void set(const std::string& assignment);
@@ -159,6 +162,10 @@ class CaseFile {
 
  private:
   std::unique_ptr<dealii::ParameterHandler> prm_;
+  // Every subsection and entry as declared, for the messages that refuse an unknown name.
+  std::unique_ptr<DeclaredParameters> declared_;
+  // The folder of the case file read, where input files it names are also looked for.
+  std::string case_directory_;
 };
 
 }  // namespace tightfit

@@ -1,10 +1,13 @@
 #include "cases/convergence_run.h"
 
 #include "cases/scenario.h"
+#include "core/step_heartbeat.h"
 #include "io/csv_table.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -53,14 +56,53 @@ CaseParameters level_parameters(const CaseParameters& base, int level) {
   return p;
 }
 
+// Before a long study: the size of each level, so that a user sees what is coming.
+void print_level_sizes(std::ostream& log, const std::vector<int>& n_vertices,
+                       const std::vector<std::size_t>& n_triangles) {
+  log << "  levels:";
+  for (std::size_t k = 0; k < n_vertices.size(); ++k)
+    log << (k == 0 ? " " : "; ") << k << ": " << n_vertices[k] << " vertices, " << n_triangles[k]
+        << " triangles";
+  log << "\n  (each level's time, and an estimate of the next one's, is printed as the level "
+         "ends)\n";
+}
+
+// The time the next level should take: this level's, scaled by the growth in vertices to the
+// power the two levels before measured (the cost's order in the vertex count), or, with one
+// level measured, 1.5 (an explicit solver: N vertices times N^(1/2) frames, the stable time step
+// falling with the edge length). The measured order is kept within 1 to 3.
+struct LevelTiming {
+  int n_vertices = 0;
+  double seconds = 0.0;
+};
+double expected_seconds(const std::vector<LevelTiming>& done, int next_vertices, bool* measured) {
+  const LevelTiming& last = done.back();
+  double order = 1.5;
+  *measured = false;
+  if (done.size() >= 2) {
+    const LevelTiming& before = done[done.size() - 2];
+    if (before.seconds > 0 && last.seconds > 0 && last.n_vertices > before.n_vertices) {
+      order = std::clamp(std::log(last.seconds / before.seconds) /
+                             std::log(double(last.n_vertices) / before.n_vertices),
+                         1.0, 3.0);
+      *measured = true;
+    }
+  }
+  return last.seconds * std::pow(double(next_vertices) / last.n_vertices, order);
+}
+
 BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_levels,
                                       const NamedBackendFactory& backend,
                                       const std::string& output_dir, CsvTable* table,
-                                      std::ostream& log) {
+                                      const std::vector<int>& level_vertices, std::ostream& log) {
   namespace fs = std::filesystem;
+  using clock = std::chrono::steady_clock;
   BackendConvergence study;
   study.backend = backend.name;
+  const clock::time_point study_start = clock::now();
+  std::vector<LevelTiming> timings;
   for (int level = 0; level < n_levels; ++level) {
+    const clock::time_point level_start = clock::now();
     auto setup = make_scenario(level_parameters(parameters, level));
     ConvergenceLevel l;
     l.level = level;
@@ -88,6 +130,20 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
                           relative(m.p_mean_Pa(), m.p_theory_Pa)});
     const bool completed = l.run.completed;
     const std::string failure = l.run.failure;
+    timings.push_back(
+        {l.n_vertices, std::chrono::duration<double>(clock::now() - level_start).count()});
+    log << "  " << backend.name << " level " << level << " took "
+        << duration_text(timings.back().seconds) << " (this backend so far "
+        << duration_text(std::chrono::duration<double>(clock::now() - study_start).count()) << ")";
+    if (completed && level + 1 < n_levels) {
+      bool measured = false;
+      const double next = expected_seconds(timings, level_vertices[level + 1], &measured);
+      log << "; level " << level + 1 << " (" << level_vertices[level + 1]
+          << " vertices) should take about " << duration_text(next)
+          << (measured ? " (cost order measured on the levels before)"
+                       : " (cost order 1.5 assumed)");
+    }
+    log << std::endl;
     study.levels.push_back(std::move(l));
     if (!completed) {
       study.failure = "level " + std::to_string(level) + ": " + failure;
@@ -152,7 +208,14 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
                                 std::to_string(n_levels));
   // Check every level's setup before running any, so a bad mesh scale does not surface after
   // the coarse levels have run for minutes.
-  for (int level = 0; level < n_levels; ++level) make_scenario(level_parameters(parameters, level));
+  std::vector<int> level_vertices;
+  std::vector<std::size_t> level_triangles;
+  for (int level = 0; level < n_levels; ++level) {
+    const auto setup = make_scenario(level_parameters(parameters, level));
+    level_vertices.push_back(setup->mesh.n_vertices);
+    level_triangles.push_back(setup->mesh.triangles.size());
+  }
+  print_level_sizes(log, level_vertices, level_triangles);
 
   // Under MPI every rank runs the study (the FE solves are distributed); the first writes the
   // tables, as run_scenario does for each level's own.
@@ -165,7 +228,7 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
   ConvergenceStudy result;
   for (const NamedBackendFactory& backend : backends) {
     result.backends.push_back(run_backend_levels(parameters, n_levels, backend, output_dir,
-                                                 table ? &*table : nullptr, log));
+                                                 table ? &*table : nullptr, level_vertices, log));
     for (const ConvergenceSummaryRow& r : summarise_convergence(result.backends.back())) {
       const ConvergenceEstimate& e = r.estimate;
       if (summary)

@@ -1,5 +1,7 @@
 #include "cases/parameter_tree.h"
 
+#include "cases/input_file_path.h"
+
 #include <sstream>
 #include <stdexcept>
 
@@ -24,6 +26,14 @@ Vec3 ParameterTree::get_vector(const std::string& name) {
   Vec3 v;
   for (int i = 0; i < 3; ++i) v[i] = std::stod(parts[i]);
   return v;
+}
+
+std::string ParameterTree::get_file_name(const std::string& name) {
+  try {
+    return resolve_input_file(get(name), case_directory);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(name + " = " + e.what());
+  }
 }
 
 }  // namespace tightfit

@@ -19,8 +19,8 @@ class ParameterTree {
   virtual void leave_subsection() = 0;
 
   // Declarations: name, default, allowed values, documentation (with units).
-  virtual void declare_double(const std::string& name, double default_value, double min,
-                              double max, const std::string& documentation) = 0;
+  virtual void declare_double(const std::string& name, double default_value, double min, double max,
+                              const std::string& documentation) = 0;
   virtual void declare_integer(const std::string& name, int default_value, int min, int max,
                                const std::string& documentation) = 0;
   virtual void declare_bool(const std::string& name, bool default_value,
@@ -29,8 +29,7 @@ class ParameterTree {
   virtual void declare_selection(const std::string& name, const std::string& default_value,
                                  const std::string& options, const std::string& documentation) = 0;
   // A comma-separated list of `options` (separated by '|'), possibly empty.
-  virtual void declare_multiple_selection(const std::string& name,
-                                          const std::string& default_value,
+  virtual void declare_multiple_selection(const std::string& name, const std::string& default_value,
                                           const std::string& options,
                                           const std::string& documentation) = 0;
   // Three comma-separated numbers.
@@ -49,11 +48,18 @@ class ParameterTree {
   virtual int get_integer(const std::string& name) = 0;
   virtual bool get_bool(const std::string& name) = 0;
   Vec3 get_vector(const std::string& name);
+  // A file_name entry (or a text entry naming an input file) as a path that exists: relative
+  // paths from the working directory, else from the case file's folder
+  // (cases/input_file_path.h). "" stays "". Throws std::invalid_argument naming the paths tried.
+  std::string get_file_name(const std::string& name);
   // The comma-separated words of a text or multiple-selection entry, blanks trimmed, empty
   // words dropped.
   std::vector<std::string> get_list(const std::string& name);
 
   static constexpr double unbounded = std::numeric_limits<double>::max();
+
+  // The folder of the case file being read; empty when the entries come from no file.
+  std::string case_directory;
 };
 
 // Enters a subsection for the lifetime of the object.

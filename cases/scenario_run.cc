@@ -1,5 +1,7 @@
 #include "cases/scenario_run.h"
 
+#include "core/step_heartbeat.h"
+
 #include "cases/body_surface_pressure.h"
 #include "core/interruption.h"
 #include "core/units.h"
@@ -143,6 +145,10 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
   for (std::size_t step = 0; step < scenario.alphas.size(); ++step) {
     try {
       throw_if_interrupted(interruption_signal(), "before load step " + std::to_string(step));
+      char what[64];
+      std::snprintf(what, sizeof what, "step %zu/%zu (alpha %.3f)", step,
+                    scenario.alphas.size() - 1, scenario.alphas[step]);
+      const StepHeartbeat heartbeat(log, what);
       result.steps.push_back(
           solve_and_measure(scenario, *backend, static_cast<int>(step), measurements));
       // The step before is written and no one reads its arrays any more.

@@ -1,7 +1,7 @@
 // What the pattern fuzz targets (fuzz_pattern_file.cc) do with each input, kept apart so
 // that the regression test of their findings (tests/pattern/test_pattern_hostile_input.cc)
-// does the same: read the file as `tightfit pattern` does, check and cut it, then mesh and sew
-// it at a coarse edge length.
+// does the same: read the file as `tightfit pattern` does (a graded file's first size), check
+// and cut it, then mesh and sew it at a coarse edge length.
 #pragma once
 
 #include "pattern/pattern_file.h"
@@ -61,7 +61,11 @@ inline double coarse_edge_length_m(const Pattern& cut) {
 // Throws what the program would report (exit status 2); returns whether the pattern was
 // meshed (false: too large to mesh while fuzzing, read and checked only).
 inline bool read_check_mesh_and_sew(const std::string& path) {
-  const Pattern p = read_pattern_file(path);
+  // A graded file: its first size, so that the pieces behind the size check are read too.
+  PatternFileOptions options_of_file;
+  const std::vector<std::string> sizes = pattern_file_sizes(path);
+  if (sizes.size() > 1) options_of_file.size = sizes.front();
+  const Pattern p = read_pattern_file(path, options_of_file);
   validate(p);
   const Pattern cut = cut_pieces(p);
   seam_lengths(cut);

@@ -1,5 +1,7 @@
 #include "pattern/pattern.h"
 
+#include "core/closest_names.h"
+
 #include <set>
 
 namespace tightfit::pattern {
@@ -11,7 +13,18 @@ double length_m(const std::vector<Segment>& segments) {
 const PanelOutline& find_panel(const Pattern& pattern, const std::string& name) {
   for (const PanelOutline& p : pattern.panels)
     if (p.name == name) return p;
-  throw PatternError("pattern '" + pattern.name + "': no panel '" + name + "'");
+  throw PatternError("pattern '" + pattern.name + "': no panel '" + name + "'" +
+                     closest_panels(pattern, name));
+}
+
+std::vector<std::string> panel_names(const Pattern& pattern) {
+  std::vector<std::string> names;
+  for (const PanelOutline& p : pattern.panels) names.push_back(p.name);
+  return names;
+}
+
+std::string closest_panels(const Pattern& pattern, const std::string& unknown) {
+  return did_you_mean(unknown, panel_names(pattern));
 }
 
 int find_edge(const PanelOutline& panel, const std::string& name) {
@@ -108,14 +121,18 @@ void validate_seams(const Pattern& pattern) {
       for (const PanelOutline& p : pattern.panels)
         if (p.name == side->panel) panel = &p;
       if (!panel)
-        throw PatternError(seam + " names panel '" + side->panel + "', which does not exist");
+        throw PatternError(seam + " names panel '" + side->panel + "', which does not exist" +
+                           closest_panels(pattern, side->panel));
       const int n = static_cast<int>(panel->edges.size());
       int previous = -1;
       for (const std::string& name : side->edges) {
         const int e = find_edge(*panel, name);
-        if (e < 0)
+        if (e < 0) {
+          std::vector<std::string> edges;
+          for (const auto& edge : panel->edges) edges.push_back(edge.name);
           throw PatternError(seam + " names edge '" + name + "' of panel '" + panel->name +
-                             "', which does not exist");
+                             "', which does not exist" + did_you_mean(name, edges));
+        }
         if (name == panel->fold_edge)
           throw PatternError(seam + " sews fold edge '" + name + "' of panel '" + panel->name +
                              "'");

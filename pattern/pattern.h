@@ -60,6 +60,13 @@ struct SeamSpec {
   EdgeRange a, b;
 };
 
+// What a file alone may leave open: which size of a graded file, and the unit of a file that
+// does not say (AAMA DXF without $INSUNITS).
+struct PatternFileOptions {
+  std::string size;   // empty: the file must hold one size
+  std::string units;  // empty (the file's, else mm checked for plausibility), mm, cm or inch
+};
+
 struct Pattern {
   std::string name;
   std::vector<PanelOutline> panels;
@@ -86,6 +93,10 @@ Pattern cut_pieces(const Pattern& pattern);
 std::vector<Segment> range_segments(const PanelOutline& panel, const EdgeRange& range);
 
 const PanelOutline& find_panel(const Pattern& pattern, const std::string& name);
+// The panels' names, and "; did you mean 'front'?" (the closest of them) for a name not among
+// them, to end the message that refuses it.
+std::vector<std::string> panel_names(const Pattern& pattern);
+std::string closest_panels(const Pattern& pattern, const std::string& unknown);
 int find_edge(const PanelOutline& panel, const std::string& name);  // -1 when absent
 
 // Length of an edge (or a chain of segments), metres.

@@ -1,5 +1,7 @@
 #include "pattern/pattern_file.h"
 
+#include "core/closest_names.h"
+
 #include "pattern/dxf_reader.h"
 #include "pattern/garmentcode_reader.h"
 #include "pattern/svg_reader.h"
@@ -62,13 +64,65 @@ EdgeRange parse_side(std::string text) {
 
 }  // namespace
 
-Pattern read_pattern_file(const std::string& path) {
+Pattern read_pattern_file(const std::string& path, const PatternFileOptions& options) {
   const std::string ext = lower_extension(path);
-  if (ext == "svg") return read_freesewing_svg(path);
-  if (ext == "json") return read_garmentcode_json(path);
-  if (ext == "dxf") return read_aama_dxf(path);
-  throw PatternError("pattern file '" + path + "': unknown format '." + ext +
-                     "' (known: .svg, .json, .dxf)");
+  if (ext == "dxf") return read_aama_dxf(path, options);
+  if (ext != "svg" && ext != "json")
+    throw PatternError("pattern file '" + path + "': unknown format '." + ext +
+                       "' (known: .svg, .json, .dxf)");
+  if (!options.size.empty())
+    throw PatternError(path + ": a size ('" + options.size +
+                       "') is chosen, but only DXF files hold several sizes");
+  if (!options.units.empty())
+    throw PatternError(path + ": a unit ('" + options.units + "') is given, but " +
+                       (ext == "svg" ? "SVG patterns are in mm" : "GarmentCode files say theirs") +
+                       " (units_in_meter)");
+  return ext == "svg" ? read_freesewing_svg(path) : read_garmentcode_json(path);
+}
+
+std::vector<std::string> pattern_file_sizes(const std::string& path) {
+  return lower_extension(path) == "dxf" ? aama_dxf_sizes(path) : std::vector<std::string>{};
+}
+
+namespace {
+
+std::string side_text(const EdgeRange& side) {
+  std::string text = side.panel + ":";
+  for (std::size_t k = 0; k < side.edges.size(); ++k) text += (k ? "+" : "") + side.edges[k];
+  return text + (side.reversed ? " reversed" : "");
+}
+
+}  // namespace
+
+std::vector<std::string> keep_panels(Pattern& pattern, const std::vector<std::string>& names) {
+  if (names.empty()) return {};
+  auto kept = [&](const std::string& panel) {
+    return std::find(names.begin(), names.end(), panel) != names.end();
+  };
+  for (const std::string& name : names) {
+    bool found = false;
+    for (const auto& panel : pattern.panels) found = found || panel.name == name;
+    if (!found) {
+      std::string all;
+      for (const auto& panel : pattern.panels) all += (all.empty() ? "" : ", ") + panel.name;
+      throw PatternError("pattern '" + pattern.name + "' has no panel '" + name + "'" +
+                         did_you_mean(name, panel_names(pattern), 0) + " (its panels: " + all +
+                         ")");
+    }
+  }
+  pattern.panels.erase(std::remove_if(pattern.panels.begin(), pattern.panels.end(),
+                                      [&](const PanelOutline& panel) { return !kept(panel.name); }),
+                       pattern.panels.end());
+  std::vector<std::string> dropped;
+  std::vector<SeamSpec> seams;
+  for (const SeamSpec& seam : pattern.seams) {
+    if (kept(seam.a.panel) && kept(seam.b.panel))
+      seams.push_back(seam);
+    else
+      dropped.push_back(side_text(seam.a) + " -- " + side_text(seam.b));
+  }
+  pattern.seams = seams;
+  return dropped;
 }
 
 std::vector<SeamSpec> parse_seam_list(const std::string& text) {
@@ -96,7 +150,7 @@ namespace {
 PanelOutline& panel_named(Pattern& pattern, const std::string& name, const std::string& what) {
   for (auto& outline : pattern.panels)
     if (outline.name == name) return outline;
-  throw PatternError(what + ": no panel '" + name + "'");
+  throw PatternError(what + ": no panel '" + name + "'" + closest_panels(pattern, name));
 }
 
 }  // namespace

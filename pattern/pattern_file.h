@@ -8,9 +8,18 @@
 
 namespace tightfit::pattern {
 
-// .svg (FreeSewing), .json (GarmentCode), .dxf (AAMA). Throws PatternError for another
+// .svg (FreeSewing), .json (GarmentCode), .dxf (AAMA); `options` choose the size and unit of
+// a DXF file and are refused for the others, which say both. Throws PatternError for another
 // extension or a broken file.
-Pattern read_pattern_file(const std::string& path);
+Pattern read_pattern_file(const std::string& path, const PatternFileOptions& options = {});
+
+// The sizes a graded file holds (AAMA DXF: its blocks' SIZE text); empty for other formats.
+std::vector<std::string> pattern_file_sizes(const std::string& path);
+
+// Keeps only the panels named (none: all) and the file's seams between them; returns the
+// seams dropped ("PANEL:EDGE -- PANEL:EDGE"), whose kept sides become free edges (hems).
+// Throws PatternError naming a panel the pattern does not have.
+std::vector<std::string> keep_panels(Pattern& pattern, const std::vector<std::string>& names);
 
 // "front:3 -- back:3 mirrored reversed; front:2+3 -- back:2+3": seams separated by ';', each
 // two sides joined by "--", a side "PANEL:EDGE[+EDGE...]" walked along the outline, or

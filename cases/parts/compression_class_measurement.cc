@@ -6,6 +6,7 @@
 #include "cases/parts/part_entries.h"
 #include "cases/region_pressure.h"
 #include "cases/step_measurement.h"
+#include "core/closest_names.h"
 #include "core/units.h"
 
 #include <cmath>
@@ -91,8 +92,11 @@ PartEntry<MeasurementMaker> compression_class_measurement_entry() {
     for (const BodyRegion& region : regions)
       if (region.name == name)
         return [region] { return std::make_unique<CompressionClassMeasurement>(region); };
+    std::vector<std::string> names;
+    for (const BodyRegion& region : regions) names.push_back(region.name);
     throw std::invalid_argument("Region: no region '" + name +
-                                "' in Measurements/Regions/Definitions");
+                                "' in Measurements/Regions/Definitions" +
+                                did_you_mean(name, names));
   };
   return e;
 }

@@ -52,14 +52,15 @@ PartEntry<PlacementMaker> from_file_placement_entry() {
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_text("File", "",
                      "A garment_NNNN.vtu written by a run of the same garment and mesh settings "
-                     "(any backend, one process); relative to the working directory.");
+                     "(any backend, one process); a relative path is read from the working "
+                     "directory, else from the case file's folder.");
     prm.declare_double("Largest depth", 0.25, 0, ParameterTree::unbounded,
                        "Points inside the body by at most this fraction of the mean rest edge "
                        "length (the penalty's own depth) are put back onto its surface; a deeper "
                        "one stops the case (-).");
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
-    const std::string path = prm.get("File");
+    const std::string path = prm.get_file_name("File");
     const double depth_fraction = prm.get_double("Largest depth");
     if (path.empty())
       throw std::invalid_argument("Placement/From file/File is empty: name a garment VTU");

@@ -56,7 +56,7 @@ void declare_mesh_body_settings(ParameterTree& prm) {
 
 MeshBodySettings parse_mesh_body_settings(ParameterTree& prm) {
   MeshBodySettings s;
-  s.file = prm.get("File");
+  s.file = prm.get_file_name("File");
   if (s.file.empty()) throw std::invalid_argument("File: no body mesh file given");
   s.options.import.metres_per_unit = prm.get_double("Unit scale");
   if (!(s.options.import.metres_per_unit > 0))

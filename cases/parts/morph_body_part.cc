@@ -66,7 +66,7 @@ PartEntry<BodyMaker> morph_body_entry() {
     prm.declare_vector("Scale axis", "0,0,1", "The fixed axis when scaling about an axis (-).");
   };
   e.parse = [](ParameterTree& prm) -> BodyMaker {
-    const std::string target = prm.get("Target mesh");
+    const std::string target = prm.get_file_name("Target mesh");
     BodyScaling scaling;
     scaling.about =
         prm.get("Scale about") == "point" ? BodyScaling::About::point : BodyScaling::About::axis;

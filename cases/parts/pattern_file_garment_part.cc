@@ -11,27 +11,18 @@ namespace tightfit {
 
 namespace {
 
-// The case file's own declarations, added to what the file says.
-void add_declarations(pattern::Pattern& p, ParameterTree& prm) {
-  // Only the panels asked for (a top without its bindings), before anything refers to them.
-  const std::vector<std::string> kept = prm.get_list("Panels");
-  for (const std::string& name : kept) {
-    bool found = false;
-    for (const auto& panel : p.panels) found = found || panel.name == name;
-    if (!found) throw std::invalid_argument("Panels: the pattern has no panel '" + name + "'");
-  }
-  if (!kept.empty())
-    p.panels.erase(std::remove_if(p.panels.begin(), p.panels.end(),
-                                  [&](const pattern::PanelOutline& panel) {
-                                    return std::find(kept.begin(), kept.end(), panel.name) ==
-                                           kept.end();
-                                  }),
-                   p.panels.end());
+// The case file's own declarations, added to what the file says. Returns the file's seams
+// dropped with the panels left uncut.
+std::vector<std::string> add_declarations(pattern::Pattern& p, ParameterTree& prm) {
+  // Only the panels asked for (a top without its bindings, a torso without its sleeves),
+  // before anything refers to them; the file's seams to the others are dropped (free edges).
+  const std::vector<std::string> dropped = pattern::keep_panels(p, prm.get_list("Panels"));
   for (const auto& seam : pattern::parse_seam_list(prm.get("Seams"))) p.seams.push_back(seam);
   pattern::declare_folds(p, prm.get("Fold edges"));
   pattern::declare_mirrored(p, prm.get_list("Mirrored panels"));
   p.ease_weft = prm.get_double("Ease weft");
   p.ease_warp = prm.get_double("Ease warp");
+  return dropped;
 }
 
 }  // namespace
@@ -46,7 +37,8 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_file_name("File", "",
                           "The pattern: FreeSewing SVG (.svg, mm), GarmentCode JSON (.json) or "
-                          "AAMA DXF (.dxf); relative to the working directory.");
+                          "AAMA DXF (.dxf); a relative path is read from the working directory, "
+                          "else from the case file's folder.");
     prm.declare_double("Mesh edge length", 0, 0, ParameterTree::unbounded,
                        "Target triangle edge length of the Delaunay mesher (m); 0 takes "
                        "Garment/Edge length weft (scaled by Garment/Mesh scale).");
@@ -61,9 +53,18 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                      "Mesh a rectangle along its grain whose seams all join such rectangles as "
                      "the tube's regular grid (Garment/Edge length weft and warp), as "
                      "Garment/Kind = tube does.");
+    prm.declare_text("Size", "",
+                     "The size to cut from a graded file (AAMA DXF: a block's SIZE text, e.g. "
+                     "34); empty: the file must hold one size.");
+    prm.declare_selection("Units", "from file", "from file|mm|cm|inch",
+                          "The unit of a DXF file that does not say ($INSUNITS absent): 'from "
+                          "file' takes $INSUNITS, else mm, refused when a piece would be under "
+                          "2 cm or over 3 m across or the largest under 10 cm; a unit given "
+                          "that contradicts $INSUNITS is refused.");
     prm.declare_text("Panels", "",
                      "The pattern's pieces to cut, a comma-separated list of panel names; "
-                     "empty: every piece.");
+                     "empty: every piece. The file's seams to pieces not cut are dropped "
+                     "(listed in the garment's description) and their edges left free.");
     prm.declare_text("Seams", "",
                      "Seams besides the file's: 'PANEL:EDGE[+EDGE] [reversed] -- "
                      "PANEL:EDGE[+EDGE] [reversed]', separated by ';'. Each side's start meets "
@@ -76,10 +77,13 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                      "each copy is the panel 'NAME mirrored'.");
   };
   e.parse = [](ParameterTree& prm) -> GarmentMaker {
-    const std::string file = prm.get("File");
+    const std::string file = prm.get_file_name("File");
     if (file.empty()) throw std::invalid_argument("File: no pattern file given");
-    pattern::Pattern p = pattern::read_pattern_file(file);
-    add_declarations(p, prm);
+    pattern::PatternFileOptions file_options;
+    file_options.size = prm.get("Size");
+    file_options.units = prm.get("Units") == "from file" ? "" : prm.get("Units");
+    pattern::Pattern p = pattern::read_pattern_file(file, file_options);
+    const std::vector<std::string> dropped = add_declarations(p, prm);
     pattern::validate(p);
     const double edge_length_m = prm.get_double("Mesh edge length");
     const double min_angle_deg = prm.get_double("Minimum angle");
@@ -98,6 +102,11 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                     garment.panels.size(), garment.seams.size(), p.name.c_str(), p.ease_weft,
                     p.ease_warp);
       garment.description = line;
+      if (!dropped.empty()) {
+        garment.description += "; " + std::to_string(dropped.size()) +
+                               " of the file's seams dropped with the panels not cut:";
+        for (const std::string& seam : dropped) garment.description += " [" + seam + "]";
+      }
       return garment;
     };
   };

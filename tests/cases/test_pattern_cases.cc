@@ -82,3 +82,45 @@ INSTANTIATE_TEST_SUITE_P(BothBackends, PatternTube, ::testing::Values("masssprin
 
 }  // namespace
 }  // namespace tightfit
+
+namespace tightfit {
+namespace {
+
+// The Garment/Pattern file entries a file does not settle: the panels cut (the file's seams to
+// the others dropped and listed), the size of a graded DXF file, the unit of one without.
+Garment pattern_garment_of(const std::vector<std::string>& entries) {
+  CaseFile file;
+  std::vector<std::string> overrides{"Output/Write VTU=false",
+                                     "Garment/Pattern file/Mesh edge length=0.03"};
+  for (const std::string& e : entries) overrides.push_back("Garment/Pattern file/" + e);
+  file.read(source_dir + "/cases/patterns/tube_45T.prm", overrides);
+  const CaseParameters parameters = file.parameters();
+  return parameters.garment.make("garment", parameters.garment.spacing);
+}
+
+TEST(PatternFileEntries, PanelsSizeAndUnits) {
+  // The jumpsuit's torso: 16 of its 57 stitches join torso panels; the 41 others are dropped.
+  const Garment torso = pattern_garment_of(
+      {"File=" + source_dir + "/data/patterns/garmentcode_jumpsuit_mean_all_specification.json",
+       "Panels=right_ftorso, left_ftorso, right_btorso, left_btorso"});
+  EXPECT_EQ(torso.panels.size(), 4u);
+  EXPECT_EQ(torso.seams.size(), 16u);
+  for (const char* part : {"; 41 of the file's seams dropped with the panels not cut: [",
+                           "[right_sleeve_f:2 -- right_ftorso:3 reversed]"})
+    EXPECT_NE(torso.description.find(part), std::string::npos) << torso.description;
+  // Size 36 of the graded file: its front and back, 420 x 610 mm each.
+  const std::string aama = source_dir + "/tests/pattern/data/";
+  const Garment graded = pattern_garment_of({"File=" + aama + "aama_graded_sizes.dxf", "Size=36"});
+  ASSERT_EQ(graded.panels.size(), 2u);
+  EXPECT_THROW(pattern_garment_of({"File=" + aama + "aama_graded_sizes.dxf"}), std::exception);
+  // The file without a unit, in inches: 16 x 23.5 in.
+  const Garment inches = pattern_garment_of({"File=" + aama + "aama_no_units.dxf", "Units=inch"});
+  ASSERT_EQ(inches.panels.size(), 2u);
+  double width = 0;
+  for (const Vec2& x : inches.panels[0].rest_positions_m) width = std::max(width, x.x());
+  EXPECT_NEAR(width, 16 * 0.0254, 1e-12);
+  EXPECT_THROW(pattern_garment_of({"File=" + aama + "aama_no_units.dxf"}), std::exception);
+}
+
+}  // namespace
+}  // namespace tightfit

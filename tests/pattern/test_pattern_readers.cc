@@ -198,10 +198,9 @@ INSTANTIATE_TEST_SUITE_P(
                    "panel 'a', edge '1' has zero length"},
         BrokenFile{"truncated.svg", "<svg width=\"10mm\"><path class=\"fabric\" d=\"M 0,0 L",
                    "not valid XML"},
-        BrokenFile{
-            "arc.svg",
-            "<svg><path class=\"fabric\" id=\"p1\" d=\"M 0,0 L 10,0 A 5 5 0 0 1 0,0 z\"/></svg>",
-            "path 'p1' (panel 'p1'): unsupported path command 'A'"},
+        BrokenFile{"arc.svg",
+                   "<svg><path class=\"fabric\" id=\"p1\" d=\"M 0,0 L 10,0 R 5 5 0,0 z\"/></svg>",
+                   "path 'p1' (panel 'p1'): unsupported path command 'R'"},
         BrokenFile{"no_piece.svg", "<svg><path class=\"mark\" d=\"M 0,0 L 1,1\"/></svg>",
                    "no <path class=\"fabric\"> element"},
         BrokenFile{"truncated.dxf",
@@ -214,6 +213,25 @@ INSTANTIATE_TEST_SUITE_P(
                    "0\nVERTEX\n8\n1\n10\n10\n20\n0\n0\nVERTEX\n8\n1\n10\n10\n20\n10\n"
                    "0\nSEQEND\n0\nENDBLK\n0\nENDSEC\n0\nEOF\n",
                    "block 'box': the boundary is open"},
+        BrokenFile{"spline_fit_points.dxf",
+                   "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nbox\n70\n0\n10\n0\n20\n0\n"
+                   "0\nLINE\n8\n1\n10\n0\n20\n0\n11\n100\n21\n0\n"
+                   "0\nSPLINE\n8\n1\n70\n8\n71\n3\n72\n0\n73\n0\n74\n2\n"
+                   "11\n100\n21\n0\n11\n0\n21\n0\n0\nENDBLK\n0\nENDSEC\n0\nEOF\n",
+                   "block 'box': SPLINE 2 is given by fit points only (2)"},
+        BrokenFile{
+            "two_loops.dxf",
+            "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nbox\n70\n0\n10\n0\n20\n0\n"
+            "0\nLWPOLYLINE\n8\n1\n90\n3\n70\n1\n10\n0\n20\n0\n10\n100\n20\n0\n10\n0\n20\n100\n"
+            "0\nLWPOLYLINE\n8\n1\n90\n3\n70\n1\n10\n200\n20\n0\n10\n300\n20\n0\n10\n200\n20\n100\n"
+            "0\nENDBLK\n0\nENDSEC\n0\nEOF\n",
+            "block 'box': LWPOLYLINE 1 is a closed loop of its own besides the other"},
+        BrokenFile{
+            "turn_point_off.dxf",
+            "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nbox\n70\n0\n10\n0\n20\n0\n"
+            "0\nLWPOLYLINE\n8\n1\n90\n3\n70\n1\n10\n0\n20\n0\n10\n100\n20\n0\n10\n0\n20\n100\n"
+            "0\nPOINT\n8\n2\n10\n50\n20\n50\n0\nENDBLK\n0\nENDSEC\n0\nEOF\n",
+            "block 'box': the turn point (50, 50) is not on a vertex of the boundary"},
         BrokenFile{"unknown.pat", "", "unknown format '.pat'"}),
     [](const ::testing::TestParamInfo<BrokenFile>& info) {
       std::string name = info.param.name;
