@@ -31,7 +31,7 @@ double axial_stretch(const std::string& law_name, EndCondition ends, const Fabri
 
 const char* to_string(EndCondition ends);
 
-// A tube on a horizontal frictionless cylinder under gravity (docs/model.md, "A tube on a
+// A tube on a horizontal frictionless cylinder under gravity (docs/closed-forms.md, "A tube on a
 // cylinder under gravity"). Its weight per unit current area, Pa: the rest areal density spread
 // over the stretched area, w = rho_A g / (alpha b), with g the component of gravity across the
 // axis and b the axial stretch.

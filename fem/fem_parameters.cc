@@ -71,9 +71,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Linear solver", to_string(d.linear_solver),
                     Selection("direct|cg-amg|gmres-amg|cg-gamg|gmres-gamg"),
                     "Solver of each Newton system: 'direct' is PETSc's MUMPS sparse LU (its "
-                    "symbolic analysis is reused while the pattern holds; the fastest at every "
-                    "size measured, up to 96600 vertices); 'cg-amg' is conjugate gradients "
-                    "preconditioned by BoomerAMG; 'gmres-amg' is GMRES with BoomerAMG; 'cg-gamg' "
+                    "symbolic analysis is reused while the pattern holds; the default, and the "
+                    "fastest on the shipped cases, docs/performance.md); 'cg-amg' is conjugate "
+                    "gradients preconditioned by BoomerAMG; 'gmres-amg' is GMRES with BoomerAMG; "
+                    "'cg-gamg' "
                     "and 'gmres-gamg' the same with PETSc's smoothed aggregation (GAMG), each "
                     "node's three displacements one block and the six rigid motions of the "
                     "current positions its near null space. When CG meets an indefinite tangent "
@@ -84,9 +85,8 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
       "Iterative solver memory", to_string(d.iterative_solver_memory), Selection("fast|lean"),
       "What the Krylov solvers trade. 'fast': PETSc's defaults. 'lean': GAMG forms each coarse "
       "operator P^T A P all at once, never storing A P, and GMRES restarts after 30 iterations "
-      "instead of 100; on the 96600-vertex tube this lowers the peak memory above the "
-      "libraries' by 44% on one rank and 44% per rank on two, for 2.4 and 2 times the CPU "
-      "time (docs/performance.md, 'Memory per rank with GAMG'). Unused by 'direct'.");
+      "instead of 100: less memory for more CPU time (measured in docs/performance.md). "
+      "Unused by 'direct'.");
   prm.declare_entry("Linear solver tolerance", "1e-10", Double(1e-16, 1e-2),
                     "Krylov solvers stop when the residual falls below eta times the right-hand "
                     "side, eta = 0.9 (|R_k|/|R_k-1|)^2 clamped to [this value, 1e-2] (inexact "

@@ -1,4 +1,4 @@
-// Garment T on the horizontal cylinder under gravity (docs/model.md, "A tube on a cylinder
+// Garment T on the horizontal cylinder under gravity (docs/closed-forms.md, "A tube on a cylinder
 // under gravity"): the top-minus-bottom pressure of both definitions on both backends against
 // the closed form 4 w (contact traction) and 2 w (garment force), w = rho_A g / (alpha b), and
 // the two backends against each other.

@@ -1,4 +1,4 @@
-// Laplace's law on a cone (docs/model.md, "A tube on a cone: Laplace's law"): a frictionless
+// Laplace's law on a cone (docs/closed-forms.md, "A tube on a cone: Laplace's law"): a frictionless
 // tube held at both ends on a cone of half-angle a presses, at every height, with
 //
 //   normal force per rest area = N(lambda) cos(a) / R(H)   x   sin(pi/n) / (pi/n)
