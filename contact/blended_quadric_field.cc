@@ -44,6 +44,7 @@ void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
   neighbour_start_.assign(1, 0);
   neighbours_.clear();
   support_m_.assign(n, 0.0);
+  beyond_squared_m2_.assign(n, 0.0);
   curvature_.assign(n, Mat3::Zero());
   for (int i = 0; i < n; ++i) {
     std::vector<int>& ring = around[i];
@@ -66,6 +67,7 @@ void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
       right += row * (-2.0 * e.dot(n_[i]));
     }
     support_m_[i] = support_over_longest_edge * longest;
+    beyond_squared_m2_[i] = (1.0 + 1e-9) * 4.0 * support_m_[i] * support_m_[i];
     // A ring too thin to fix all three (collinear neighbours) keeps the least-norm part: the
     // small ridge only matters in a direction no neighbour measures.
     normal_matrix += 1e-12 * (normal_matrix.trace() + 1e-300) * Mat3::Identity();
@@ -93,17 +95,26 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Tr
     std::fill(mark.begin(), mark.end(), 0u);
     stamp = 1;
   }
-  thread_local std::vector<int> queue;
-  thread_local std::vector<Term> terms;
+  thread_local std::vector<int> queue_storage;
+  thread_local std::vector<Term> terms_storage;
+  // Plain locals for the walk, so that the loop does not reach the thread's storage anew on
+  // every vertex.
+  std::vector<int>& queue = queue_storage;
+  std::vector<Term>& terms = terms_storage;
+  unsigned* const marks = mark.data();
+  const unsigned this_query = stamp;
   queue.clear();
   terms.clear();
   for (int v : seed)
-    if (mark[v] != stamp) mark[v] = stamp, queue.push_back(v);
+    if (marks[v] != this_query) marks[v] = this_query, queue.push_back(v);
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const int i = queue[q];
     const Vec3 delta = x - p_[i];
-    const double s = support_m_[i], distance = delta.norm(), r = distance / s;
     const bool seed_vertex = q < 3;
+    // Most vertices the walk meets lie well beyond twice their support: their squared distance
+    // tells so without the root and the division (a margin of 1e-9 keeps the test below exact).
+    if (!seed_vertex && delta.squaredNorm() > beyond_squared_m2_[i]) continue;
+    const double s = support_m_[i], distance = delta.norm(), r = distance / s;
     if (r >= 2.0 && !seed_vertex) continue;
     // The facing factor: S((n_i . m + 1/2) / (1/2)), S the quintic smoothstep.
     const double a = 2.0 * (n_[i].dot(m) + 0.5);
@@ -137,7 +148,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Tr
     }
     for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k) {
       const int j = neighbours_[k];
-      if (mark[j] != stamp) mark[j] = stamp, queue.push_back(j);
+      if (marks[j] != this_query) marks[j] = this_query, queue.push_back(j);
     }
   }
   Value v;

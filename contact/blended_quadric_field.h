@@ -68,6 +68,8 @@ class BlendedQuadricField {
   std::vector<Mat3> curvature_;
   std::vector<double> shift_m_;  // c_i
   std::vector<double> support_m_;
+  // (2 s_i)^2 (1 + 1e-9): a vertex farther than its root from x has r >= 2 (evaluate's walk).
+  std::vector<double> beyond_squared_m2_;
   std::vector<int> neighbour_start_, neighbours_;  // the edge neighbours of vertex i (CSR)
 };
 

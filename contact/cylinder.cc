@@ -16,6 +16,9 @@ Cylinder::Cylinder(const Vec3& point_on_axis_m, const Vec3& axis, double radius_
       radius_m_(0.0),
       display_height_m_(display_height_m) {
   if (!(axis.norm() > 0)) throw std::invalid_argument("Body/Axis: the cylinder axis is zero");
+  e1_ = reference_direction_normal_to(axis_);
+  e2_ = axis_.cross(e1_);
+  across_axis_ = Mat3::Identity() - axis_ * axis_.transpose();
   set_radius(radius_m);
 }
 
@@ -25,7 +28,7 @@ void Cylinder::set_radius(double radius_m) {
   radius_m_ = radius_m;
 }
 
-SurfacePoint Cylinder::query(const Vec3& x) const {
+SurfacePoint Cylinder::answer(const Vec3& x, QueryParts parts) const {
   const Vec3 from_axis = x - point_;
   const Vec3 radial = from_axis - from_axis.dot(axis_) * axis_;
   const double distance_to_axis = radial.norm();
@@ -37,12 +40,14 @@ SurfacePoint Cylinder::query(const Vec3& x) const {
   s.gap_gradient = s.outward_normal;
   // The normal turns only round the axis: dn/dx = (I - a a^T - n n^T) / rho, the Hessian of
   // rho - R. On the axis itself it does not exist; zero is left there.
-  if (distance_to_axis > 0)
-    s.normal_derivative_per_m = (Mat3::Identity() - axis_ * axis_.transpose() -
-                                 s.outward_normal * s.outward_normal.transpose()) /
-                                distance_to_axis;
-  s.location.coordinates =
-      Vec3(from_axis.dot(axis_), angle_round_axis_rad(axis_, s.outward_normal), 0.0);
+  if (parts.normal_derivative && distance_to_axis > 0)
+    s.normal_derivative_per_m =
+        (across_axis_ - s.outward_normal * s.outward_normal.transpose()) / distance_to_axis;
+  // The angle as angle_round_axis_rad measures it, from the kept frame.
+  if (parts.location)
+    s.location.coordinates =
+        Vec3(from_axis.dot(axis_), std::atan2(s.outward_normal.dot(e2_), s.outward_normal.dot(e1_)),
+             0.0);
   return s;
 }
 
@@ -52,7 +57,7 @@ Vec3 Cylinder::surface_point_m(const SurfaceLocation& location) const {
 }
 
 Vec3 Cylinder::reference_direction() const {
-  return reference_direction_normal_to(axis_);
+  return e1_;
 }
 
 double Cylinder::angle_deg(const Vec3& x) const {

@@ -15,7 +15,10 @@ class Cylinder final : public RigidBody {
   std::string name() const override { return "cylinder"; }
   // The location's coordinates are (axial coordinate from point_on_axis_m (m), angle round the
   // axis from reference_direction() (radians), 0): the same point as the radius grows.
-  SurfacePoint query(const Vec3& x) const override;
+  SurfacePoint query(const Vec3& x) const override { return answer(x, QueryParts{}); }
+  SurfacePoint query_parts(const Vec3& x, NearFaces&, QueryParts parts) const override {
+    return answer(x, parts);
+  }
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 
@@ -29,8 +32,14 @@ class Cylinder final : public RigidBody {
   double angle_deg(const Vec3& x) const;
 
  private:
+  SurfacePoint answer(const Vec3& x, QueryParts parts) const;
+
   Vec3 point_;
   Vec3 axis_;
+  // The frame the angles are measured in: reference_direction(), axis x it, and the projection
+  // I - a a^T normal to the axis, kept so that a query does not build them again.
+  Vec3 e1_, e2_;
+  Mat3 across_axis_;
   double radius_m_;
   double display_height_m_;
 };

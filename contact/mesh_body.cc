@@ -121,9 +121,9 @@ SurfacePoint MeshBody::query(const Vec3& x) const {
   return finished(x, faceted_query(x));
 }
 
-SurfacePoint MeshBody::query_near(const Vec3& x, NearFaces& near) const {
+SurfacePoint MeshBody::query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const {
   if (near.shape == shape_id_ && (x - near.centre_m).norm() <= near.reach_m)
-    return finished(x, faceted_answer(x, bvh_.closest_among(x, near.faces)));
+    return finished(x, faceted_answer(x, bvh_.closest_among(x, near.faces)), parts, &near);
   // For x within r of the centre c, whose closest face is at d from c: x's closest face is no
   // farther from x than c's, d + r, so it lies within d + 2 r of c. (A nanometre more for
   // round-off.)
@@ -132,13 +132,20 @@ SurfacePoint MeshBody::query_near(const Vec3& x, NearFaces& near) const {
   near.reach_m = near_reach_m_;
   near.shape = shape_id_;
   bvh_.within(x, (x - hit.point_m).norm() + 2.0 * near_reach_m_ + 1e-9, near.faces);
-  return finished(x, faceted_answer(x, hit));
+  return finished(x, faceted_answer(x, hit), parts, &near);
 }
 
-SurfacePoint MeshBody::finished(const Vec3& x, SurfacePoint s) const {
+SurfacePoint MeshBody::faceted_near(const Vec3& x, const NearFaces* near) const {
+  if (near && near->shape == shape_id_ && (x - near->centre_m).norm() <= near->reach_m)
+    return faceted_answer(x, bvh_.closest_among(x, near->faces));
+  return faceted_query(x);
+}
+
+SurfacePoint MeshBody::finished(const Vec3& x, SurfacePoint s, QueryParts parts,
+                                NearFaces* near) const {
   if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth) {
-    smooth_query(x, s);  // the closest point on the skin's level set
-    s.location = smooth_location(s.closest_point_m, s.location.face);
+    smooth_query(x, s, parts.closest_point, near);  // the closest point on the skin's level set
+    if (parts.location) s.location = smooth_location(s.closest_point_m, s.location.face);
   } else {
     // The skin: the surface moved out along the normal.
     s.closest_point_m += skin_offset_m_ * s.outward_normal;

@@ -48,7 +48,13 @@ class MeshBody final : public RigidBody {
   // query(x) from the faces kept in `near`: a point that moved no farther than their reach
   // from where they were found has its closest point on one of them (below), so only those
   // are searched; beyond the reach, or on a new shape, the tree finds them again.
-  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override;
+  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override {
+    return query_parts(x, near, QueryParts{});
+  }
+  // query_near without the smooth surface's location walk when `parts.location` is off, and
+  // without its closest point's further Newton steps when `parts.closest_point` is off (the
+  // faceted answer's closest point and location, and every dn/dx, come with the rest).
+  SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override;
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 
@@ -70,12 +76,18 @@ class MeshBody final : public RigidBody {
   // The faceted answer at x whose closest point of the flat faces is `hit`.
   SurfacePoint faceted_answer(const Vec3& x, const TriangleBvh::Hit& hit) const;
   // The contact surface's answer (the skin, or the smooth field) from the faceted one.
-  SurfacePoint finished(const Vec3& x, SurfacePoint faceted) const;
+  // `near` (when given) answers the smooth surface's Newton steps as it does x's query.
+  SurfacePoint finished(const Vec3& x, SurfacePoint faceted, QueryParts parts = QueryParts{},
+                        NearFaces* near = nullptr) const;
+  // The faceted answer at x, from `near`'s faces when x lies within their reach (the same
+  // closest point as the tree's), else from the tree.
+  SurfacePoint faceted_near(const Vec3& x, const NearFaces* near) const;
   // Replaces the faceted answer's distance, normal and derivatives by the smooth field's where
   // the field covers x (blended back to the faceted ones as its weights fade, far off the
   // surface), with the closest point on the smooth surface moved out by the skin (the level
   // set g = skin offset); the distance is returned before the skin is taken off.
-  void smooth_query(const Vec3& x, SurfacePoint& s) const;
+  void smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point = true,
+                    const NearFaces* near = nullptr) const;
   // smooth_query's distance, normal and derivatives alone, with the closest point one Newton
   // step x - g n onto the surface.
   void smooth_field(const Vec3& x, SurfacePoint& s) const;

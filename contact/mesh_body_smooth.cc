@@ -20,7 +20,8 @@ constexpr double faceted_below_weight = 0.05, smooth_above_weight = 0.25;
 
 }  // namespace
 
-void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s) const {
+void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
+                            const NearFaces* near) const {
   smooth_field(x, s);
   const double gap = s.signed_distance_m - skin_offset_m_;
   // Newton's steps y <- y - (g(y) - t) n(y) onto the skin's level set g = t: the first is off
@@ -28,8 +29,8 @@ void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s) const {
   // so a point more than 1e-7 m off (not in contact: there |gap| is within the gap tolerance,
   // 1e-8 m) takes two more.
   Vec3 y = x - gap * s.outward_normal;
-  for (int step = 0; step < 2 && std::abs(gap) > 1e-7; ++step) {
-    SurfacePoint at = faceted_query(y);
+  for (int step = 0; closest_point && step < 2 && std::abs(gap) > 1e-7; ++step) {
+    SurfacePoint at = faceted_near(y, near);
     smooth_field(y, at);
     y -= (at.signed_distance_m - skin_offset_m_) * at.outward_normal;
   }

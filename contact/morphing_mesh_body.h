@@ -30,6 +30,9 @@ class MorphingMeshBody final : public RigidBody {
   SurfacePoint query_near(const Vec3& x, NearFaces& near) const override {
     return mesh_.query_near(x, near);
   }
+  SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override {
+    return mesh_.query_parts(x, near, parts);
+  }
   DisplayMesh display_mesh() const override { return mesh_.display_mesh(); }
   Vec3 surface_point_m(const SurfaceLocation& l) const override { return mesh_.surface_point_m(l); }
 

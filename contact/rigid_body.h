@@ -44,6 +44,19 @@ struct NearFaces {
   std::vector<int> faces;
 };
 
+// The parts of a SurfacePoint a caller needs beyond the signed distance, outward normal and
+// gap gradient (RigidBody::query_parts). A body may skip the others' cost and leave them
+// rough or at their defaults: an explicit frame's contact force without friction needs none
+// of them. On the cylinder the location's angle (an atan2) and dn/dx cost more than the rest
+// of the answer; on a mesh body's smooth surface the closest point takes two more Newton steps
+// (a point not in contact; without them it is the first step's, x - g n) and the location a
+// walk over the faces.
+struct QueryParts {
+  bool closest_point = true;
+  bool normal_derivative = true;
+  bool location = true;
+};
+
 // A triangulated surface for drawing the body (ParaView output); not used for contact.
 struct DisplayMesh {
   std::vector<Vec3> vertices_m;
@@ -61,6 +74,12 @@ class RigidBody {
   virtual SurfacePoint query_near(const Vec3& x, NearFaces& near) const {
     (void)near;
     return query(x);
+  }
+  // query_near(x, near) with `parts` filled (and what every answer has); the rest may be left
+  // at their defaults. By default the whole answer.
+  virtual SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const {
+    (void)parts;
+    return query_near(x, near);
   }
   virtual DisplayMesh display_mesh() const = 0;
   // Where a SurfaceLocation found by query() is now: after the body grew or morphed it is the

@@ -54,6 +54,10 @@ SurfacePoint ScaledBody::query_near(const Vec3& x, NearFaces& near) const {
   return carried(body_.query_near(unscaled(x), near));
 }
 
+SurfacePoint ScaledBody::query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const {
+  return carried(body_.query_parts(unscaled(x), near, parts));
+}
+
 DisplayMesh ScaledBody::display_mesh() const {
   DisplayMesh mesh = body_.display_mesh();
   for (Vec3& v : mesh.vertices_m) v = scaled(v);

@@ -29,6 +29,7 @@ class ScaledBody final : public RigidBody {
   SurfacePoint query(const Vec3& x) const override;
   // The body's own query_near at the point mapped back: `near` is kept in the body's own frame.
   SurfacePoint query_near(const Vec3& x, NearFaces& near) const override;
+  SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override;
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 

@@ -123,7 +123,10 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   damper_direction_[i] = Vec3::Zero();
   if ((x - asked_at_m_[i]).norm() < 0.5 * (clearance_m_[i] - multiplier_N_[i] / penalty_N_per_m))
     return Vec3::Zero();
-  const SurfacePoint s = problem_.body->query_near(x, near_[i]);
+  // Without friction the force needs the gap and the normals alone (RigidBody::query_parts).
+  QueryParts parts;
+  parts.closest_point = parts.normal_derivative = parts.location = friction_.active();
+  const SurfacePoint s = problem_.body->query_parts(x, near_[i], parts);
   asked_at_m_[i] = x;
   clearance_m_[i] = s.signed_distance_m;
   const double lambda_N =
