@@ -30,6 +30,12 @@ Usage:
       the other one), its girth along the section and as a tape reads it (the convex hull),
       its area and centroid, and the line through the first and last centroids: the limb's
       axis for Placement/Tube round axis (docs/stocking.md).
+  tightfit design DESIGN.prm [--output DIR] [--set "Design/Entry=value" | "Case/Entry=value" ...]
+      Designs the tapered tube of the design's case so that it gives the pressure asked for at
+      the measuring points of the limb: Laplace's first guess, then simulations corrected band
+      by band; prints each iteration and writes the tables and the cut (cut.csv, cut.svg,
+      cut.dxf) into DIR (docs/design.md). --set "Design/..." sets the design's entries, every
+      other one the case's.
   tightfit --print-parameters [--prm | --json]
       Lists every parameter with its documentation, unit and default (--prm: as a case file to
       start from; --json: with each entry's allowed values).
@@ -84,7 +90,7 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     return cl;
   }
   if (first != "run" && first != "compare" && first != "convergence" && first != "pattern" &&
-      first != "girths")
+      first != "girths" && first != "design")
     throw UsageError("unknown command '" + first + "'");
   cl.command = first;
   for (std::size_t i = 1; i < args.size(); ++i) {
