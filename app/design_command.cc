@@ -99,8 +99,14 @@ int design_command(const CommandLine& cl, std::ostream& out) {
                             mmHg(b.mean_Pa - problem.targets_Pa[k])});
     }
   };
+  // Each iteration starts from where the one before left the garment.
+  const auto iteration_dir = [&](int number) {
+    return (dir / ("iteration_" + std::to_string(number))).string();
+  };
   const auto simulate = [&](const std::vector<double>& c, int number) {
-    return simulate_cut(setup, c, "", (dir / ("iteration_" + std::to_string(number))).string());
+    const std::string previous =
+        number > 1 ? iteration_dir(number - 1) + "/garment_0000.vtu" : std::string();
+    return simulate_cut(setup, c, "", iteration_dir(number), previous);
   };
 
   const auto start = std::chrono::steady_clock::now();

@@ -29,10 +29,14 @@ class DesignRunFailed : public std::runtime_error {
 
 // Runs the case on `backend` (empty: the case's own) with the garment cut to
 // `circumferences_m`, writing the run's files into `output_dir` and its progress into
-// output_dir/run.log. Throws DesignRunFailed when the run stops early, std::invalid_argument
-// for a case the cut makes invalid.
+// output_dir/run.log. With `start_from` (a garment VTU of an earlier cut of the same mesh) the
+// garment starts where that run left it (Placement/Kind = from file) instead of the case's
+// placement: the next iteration's garment is already on the limb (a cut whose mesh differs
+// starts from the case's placement). Throws DesignRunFailed when the run stops early,
+// std::invalid_argument for a case the cut makes invalid.
 std::vector<BandPressure> simulate_cut(const CaseSimulationSetup& setup,
                                        const std::vector<double>& circumferences_m,
-                                       const std::string& backend, const std::string& output_dir);
+                                       const std::string& backend, const std::string& output_dir,
+                                       const std::string& start_from = "");
 
 }  // namespace tightfit

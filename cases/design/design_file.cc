@@ -156,6 +156,14 @@ void DesignFile::read(const std::string& path, const std::vector<std::string>& o
     std::string piece = settings.substr(begin, end - begin);
     piece.erase(0, piece.find_first_not_of(" \t\n"));
     piece.erase(piece.find_last_not_of(" \t\n") + 1);
+    // "Path = value" as in a case file: blanks round the '=' dropped.
+    const std::size_t equals = piece.find('=');
+    if (equals != std::string::npos) {
+      std::string path = piece.substr(0, equals), value = piece.substr(equals + 1);
+      path.erase(path.find_last_not_of(" \t") + 1);
+      value.erase(0, value.find_first_not_of(" \t"));
+      piece = path + "=" + value;
+    }
     if (!piece.empty()) case_overrides_.push_back(piece);
     begin = end + 1;
   }
