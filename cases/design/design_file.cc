@@ -96,33 +96,24 @@ void declare_case_garment(ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-// "Path/To/Entry=value" into `prm`; false when the entry is not declared there.
-bool assign(ParameterHandler& prm, const std::string& assignment, bool must_exist) {
+// "Path/To/Entry=value" into `prm`, as the text "subsection Path ... set Entry = value ... end"
+// it stands for; an entry `prm` does not declare is refused when `must_exist`, else skipped.
+void assign(ParameterHandler& prm, const std::string& assignment, bool must_exist) {
   const auto equals = assignment.find('=');
   if (equals == std::string::npos)
     throw std::runtime_error("--set \"" + assignment + "\": expected \"Path/To/Entry=value\"");
-  const std::string path = assignment.substr(0, equals), value = assignment.substr(equals + 1);
-  std::vector<std::string> parts;
-  for (std::size_t start = 0;;) {
-    const auto slash = path.find('/', start);
-    parts.push_back(path.substr(start, slash - start));
-    if (slash == std::string::npos) break;
-    start = slash + 1;
+  std::string text, closing, path = assignment.substr(0, equals);
+  for (auto slash = path.find('/'); slash != std::string::npos; slash = path.find('/')) {
+    text += "subsection " + path.substr(0, slash) + "\n";
+    closing += "end\n";
+    path.erase(0, slash + 1);
   }
-  int depth = 0;
-  bool done = true;
+  text += "set " + path + " = " + assignment.substr(equals + 1) + "\n" + closing;
   try {
-    for (std::size_t i = 0; i + 1 < parts.size(); ++i, ++depth) prm.enter_subsection(parts[i]);
-    prm.set(parts.back(), value);
+    prm.parse_input_from_string(text, "", !must_exist);
   } catch (const std::exception& e) {
-    if (must_exist) {
-      for (; depth > 0; --depth) prm.leave_subsection();
-      throw std::runtime_error("--set \"" + assignment + "\": " + reason(e));
-    }
-    done = false;
+    throw std::runtime_error("--set \"" + assignment + "\": " + reason(e));
   }
-  for (; depth > 0; --depth) prm.leave_subsection();
-  return done;
 }
 
 std::vector<NamedValue> named(const std::string& text, const std::string& entry) {
