@@ -123,9 +123,67 @@ int design_command(const CommandLine& cl, std::ostream& out) {
   std::vector<double> c;
   for (const DesignBand& b : last.bands) c.push_back(b.circumference_m);
 
+  // The cut.
+  const std::vector<CutKnot> cut = design_cut(limb.girths_m, problem.points, c);
+  write_cut_csv((dir / "cut.csv").string(), cut);
+  write_cut_svg((dir / "cut.svg").string(), parameters.garment.name, cut);
+  write_cut_dxf((dir / "cut.dxf").string(), parameters.garment.name, cut);
+
+  // What the simulation adds to Laplace's law, band by band (design.csv, written before the
+  // check, which may take long, and again with it).
+  const auto final_design = [&](const std::vector<BandPressure>& check) {
+    std::vector<std::string> headers = {
+        "point", "H [m]", "target", "Laplace", "Laplace error", "simulated mean", "simulated peak"};
+    std::vector<std::string> columns = {"point",           "height_m",    "girth_m",
+                                        "circumference_m", "target_mmHg", "laplace_mmHg",
+                                        "mean_mmHg",       "peak_mmHg"};
+    if (!check.empty()) {
+      headers.insert(headers.end(),
+                     {settings.check_backend + " mean", settings.check_backend + " peak"});
+      columns.insert(columns.end(), {"check_mean_mmHg", "check_peak_mmHg"});
+    }
+    TextTable final_table(std::string(result.met ? "The design" : "The last iteration (not met)") +
+                              " after " + std::to_string(result.iterations.size()) +
+                              " simulations, " + format_fixed(total_s, 0) +
+                              " s: Laplace's law against the simulation, mmHg",
+                          headers);
+    CsvTable final_csv((dir / "design.csv").string(), columns);
+    for (std::size_t k = 0; k < last.bands.size(); ++k) {
+      const DesignBand& b = last.bands[k];
+      std::vector<std::string> row = {problem.points[k].name,
+                                      format_fixed(problem.points[k].value, 4),
+                                      format_fixed(mmHg(problem.targets_Pa[k]), 2),
+                                      format_fixed(mmHg(b.laplace_Pa), 2),
+                                      format_fixed(mmHg(b.laplace_Pa - b.mean_Pa), 2),
+                                      format_fixed(mmHg(b.mean_Pa), 2),
+                                      format_fixed(mmHg(b.peak_Pa), 2)};
+      std::vector<CsvCell> cells = {problem.points[k].name,
+                                    problem.points[k].value,
+                                    problem.girths_m[k],
+                                    b.circumference_m,
+                                    mmHg(problem.targets_Pa[k]),
+                                    mmHg(b.laplace_Pa),
+                                    mmHg(b.mean_Pa),
+                                    mmHg(b.peak_Pa)};
+      if (!check.empty()) {
+        row.push_back(format_fixed(mmHg(check[k].mean_Pa), 2));
+        row.push_back(format_fixed(mmHg(check[k].peak_Pa), 2));
+        cells.push_back(mmHg(check[k].mean_Pa));
+        cells.push_back(mmHg(check[k].peak_Pa));
+      }
+      final_table.add_row(row);
+      final_csv.write_row(cells);
+    }
+    return final_table;
+  };
+  final_design({});
+
   // The check on another backend: the final cut once more.
   std::vector<BandPressure> check;
   if (!settings.check_backend.empty()) {
+    out << "Checking the cut on the " << settings.check_backend << " backend ("
+        << (dir / ("check_" + settings.check_backend)).string() << ")\n"
+        << std::flush;
     try {
       check = simulate_cut(setup, c, settings.check_backend,
                            (dir / ("check_" + settings.check_backend)).string());
@@ -135,54 +193,7 @@ int design_command(const CommandLine& cl, std::ostream& out) {
     }
   }
 
-  // The cut.
-  const std::vector<CutKnot> cut = design_cut(limb.girths_m, problem.points, c);
-  write_cut_csv((dir / "cut.csv").string(), cut);
-  write_cut_svg((dir / "cut.svg").string(), parameters.garment.name, cut);
-  write_cut_dxf((dir / "cut.dxf").string(), parameters.garment.name, cut);
-
-  // What the simulation adds to Laplace's law, band by band.
-  std::vector<std::string> headers = {"point",         "H [m]",          "target",        "Laplace",
-                                      "Laplace error", "simulated mean", "simulated peak"};
-  std::vector<std::string> columns = {"point",       "height_m",     "girth_m",   "circumference_m",
-                                      "target_mmHg", "laplace_mmHg", "mean_mmHg", "peak_mmHg"};
-  if (!check.empty()) {
-    headers.insert(headers.end(),
-                   {settings.check_backend + " mean", settings.check_backend + " peak"});
-    columns.insert(columns.end(), {"check_mean_mmHg", "check_peak_mmHg"});
-  }
-  TextTable final_table(std::string(result.met ? "The design" : "The last iteration (not met)") +
-                            " after " + std::to_string(result.iterations.size()) +
-                            " simulations, " + format_fixed(total_s, 0) +
-                            " s: Laplace's law against the simulation, mmHg",
-                        headers);
-  CsvTable final_csv((dir / "design.csv").string(), columns);
-  for (std::size_t k = 0; k < last.bands.size(); ++k) {
-    const DesignBand& b = last.bands[k];
-    std::vector<std::string> row = {problem.points[k].name,
-                                    format_fixed(problem.points[k].value, 4),
-                                    format_fixed(mmHg(problem.targets_Pa[k]), 2),
-                                    format_fixed(mmHg(b.laplace_Pa), 2),
-                                    format_fixed(mmHg(b.laplace_Pa - b.mean_Pa), 2),
-                                    format_fixed(mmHg(b.mean_Pa), 2),
-                                    format_fixed(mmHg(b.peak_Pa), 2)};
-    std::vector<CsvCell> cells = {problem.points[k].name,
-                                  problem.points[k].value,
-                                  problem.girths_m[k],
-                                  b.circumference_m,
-                                  mmHg(problem.targets_Pa[k]),
-                                  mmHg(b.laplace_Pa),
-                                  mmHg(b.mean_Pa),
-                                  mmHg(b.peak_Pa)};
-    if (!check.empty()) {
-      row.push_back(format_fixed(mmHg(check[k].mean_Pa), 2));
-      row.push_back(format_fixed(mmHg(check[k].peak_Pa), 2));
-      cells.push_back(mmHg(check[k].mean_Pa));
-      cells.push_back(mmHg(check[k].peak_Pa));
-    }
-    final_table.add_row(row);
-    final_csv.write_row(cells);
-  }
+  const TextTable final_table = final_design(check);
   out << final_table << "  results in " << dir.string()
       << "/ (design_iterations.csv, design.csv, cut.csv, cut.svg, cut.dxf, iteration_N/";
   if (!check.empty()) out << ", check_" << settings.check_backend << "/";
