@@ -43,6 +43,12 @@ Usage:
       output/measure/<file name>). BODY is an OBJ, STL or PLY file (--units: metres per unit
       or m, cm, mm, default m; --up: the file's up axis, default +z); a case's body is read as
       the case reads it (docs/bodies.md, "Measuring a body").
+  tightfit design DESIGN.prm [--output DIR] [--set "Design/Entry=value" | "Case/Entry=value" ...]
+      Designs the tapered tube of the design's case so that it gives the pressure asked for at
+      the measuring points of the limb: Laplace's first guess, then simulations corrected band
+      by band; prints each iteration and writes the tables and the cut (cut.csv, cut.svg,
+      cut.dxf) into DIR (docs/design.md). --set "Design/..." sets the design's entries, every
+      other one the case's.
   tightfit --print-parameters [--prm | --json]
       Lists every parameter with its documentation, unit and default (--prm: as a case file to
       start from; --json: with each entry's allowed values).
@@ -107,10 +113,13 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
     }
     return cl;
   }
-  const std::vector<std::string> commands{"run",     "compare",  "convergence",
-                                          "pattern", "girths",   "--print-parameters",
-                                          "--help",  "--version"};
-  if (std::find(commands.begin(), commands.begin() + 5, first) == commands.begin() + 5)
+  // The commands parsed here, then the ones only offered as suggestions ("measure" reads its
+  // own options, app/measure_command.h).
+  const std::vector<std::string> commands{"run",    "compare",  "convergence", "pattern",
+                                          "girths", "design",   "measure",     "--print-parameters",
+                                          "--help", "--version"};
+  const auto parsed_end = commands.begin() + 6;
+  if (std::find(commands.begin(), parsed_end, first) == parsed_end)
     throw UsageError("unknown command '" + first + "'" + did_you_mean(first, commands));
   cl.command = first;
   for (std::size_t i = 1; i < args.size(); ++i) {

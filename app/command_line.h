@@ -10,7 +10,7 @@ namespace tightfit {
 
 struct CommandLine {
   std::string
-      command;  // run, compare, convergence, pattern, girths, print-parameters, help, version
+      command;  // run, compare, convergence, design, pattern, girths, print-parameters, help, version
   std::vector<std::string> case_files;
   std::string output_dir;                  // empty: the case's Output/Directory
   std::vector<std::string> overrides;      // "Path/To/Entry=value"

@@ -3,6 +3,7 @@
 #include "app/command_line.h"
 #include "app/compare_command.h"
 #include "app/convergence_command.h"
+#include "app/design_command.h"
 #include "app/girths_command.h"
 #include "app/measure_command.h"
 #include "app/mpi_session.h"
@@ -55,8 +56,10 @@ int main(int argc, char** argv) {
     if (cl.command == "run") status = run_command(cl, out);
     if (cl.command == "compare") status = compare_command(cl, out);
     if (cl.command == "convergence") status = convergence_command(cl, out);
+    if (cl.command == "design") status = design_command(cl, out);
     if (interruption_signal() != 0) return 128 + interruption_signal();
-    if (cl.command == "run" || cl.command == "compare" || cl.command == "convergence")
+    if (cl.command == "run" || cl.command == "compare" || cl.command == "convergence" ||
+        cl.command == "design")
       return status;
     if (cl.command == "pattern") return pattern_command(cl, out);
     if (cl.command == "girths") return girths_command(cl, out);

@@ -1,6 +1,8 @@
 #include "cases/compression_class.h"
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace tightfit {
 
@@ -34,6 +36,13 @@ CompressionClass ral_gz_387_class(double p_mmHg) {
                            classes[k + 1].name + ": neither"};
   }
   return {0.0, "not a pressure"};  // NaN
+}
+
+CompressionClassRange ral_gz_387_range(int number) {
+  if (number < 1 || number > 4)
+    throw std::invalid_argument("no compression class " + std::to_string(number) +
+                                " in RAL-GZ 387 (I to IV)");
+  return {classes[number - 1].low_mmHg, classes[number - 1].high_mmHg};
 }
 
 }  // namespace tightfit

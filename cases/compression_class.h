@@ -16,4 +16,11 @@ struct CompressionClass {
 
 CompressionClass ral_gz_387_class(double ankle_pressure_mmHg);
 
+// The pressure range at B of class `number` (1 to 4), mmHg; class IV has no upper bound
+// (infinity). Throws std::invalid_argument for another number.
+struct CompressionClassRange {
+  double low_mmHg = 0.0, high_mmHg = 0.0;
+};
+CompressionClassRange ral_gz_387_range(int number);
+
 }  // namespace tightfit
