@@ -42,7 +42,7 @@ Usage:
       and body.png (front and side with landmarks and tape lines) into DIR (default
       output/measure/<file name>). BODY is an OBJ, STL or PLY file (--units: metres per unit
       or m, cm, mm, default m; --up: the file's up axis, default +z); a case's body is read as
-      the case reads it (docs/bodies.md, "Measuring a body").
+      the case reads it (docs/measuring-bodies.md).
   tightfit design DESIGN.prm [--output DIR] [--set "Design/Entry=value" | "Case/Entry=value" ...]
       Designs the tapered tube of the design's case so that it gives the pressure asked for at
       the measuring points of the limb: Laplace's first guess, then simulations corrected band

@@ -1,6 +1,6 @@
 // `tightfit measure BODY|CASE.prm`: a body's landmarks, part axes and standard girths
 // (body/body_measurements.h) on screen, as JSON and CSV, and a picture of the body with them
-// (docs/bodies.md, "Measuring a body").
+// (docs/measuring-bodies.md).
 #pragma once
 
 #include <iosfwd>

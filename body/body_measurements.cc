@@ -1,4 +1,4 @@
-// The landmarks and girths of docs/bodies.md, "Measuring a body": the definitions there are
+// The landmarks and girths of docs/measuring-bodies.md: the definitions there are
 // the ones implemented here, level by level on the torso scan (torso_scan.h) and along the
 // limbs' axes (limb_track.h).
 #include "body/body_measurements.h"

@@ -1,5 +1,5 @@
 // What a tailor reads off a body: landmarks, the axes of its parts and the standard girths
-// (ISO 8559-1 names them), found on a body mesh alone (docs/bodies.md, "Measuring a body").
+// (ISO 8559-1 names them), found on a body mesh alone (docs/measuring-bodies.md).
 // The body stands in tightfit's frame: z up, its front towards -y, its left towards +x; the
 // arms apart from the torso below the armpits and the legs apart below the crotch (A-pose,
 // T-pose).

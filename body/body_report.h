@@ -1,5 +1,5 @@
 // A body's measurements as a table on screen (cm), a JSON file and a CSV file (m), for
-// `tightfit measure` (docs/bodies.md, "Measuring a body").
+// `tightfit measure` (docs/measuring-bodies.md).
 #pragma once
 
 #include "body/body_measurements.h"

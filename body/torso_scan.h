@@ -1,4 +1,4 @@
-// The body followed down in horizontal sections (docs/bodies.md, "Measuring a body"): from the
+// The body followed down in horizontal sections (docs/measuring-bodies.md): from the
 // head, the loop round the body's middle is followed level by level; where the arms part from
 // it (its side pulls in by more than an arm's breadth) are the armpits, where it parts into two
 // loops either side of its centroid is the crotch, and below, each leg is followed to the
