@@ -126,7 +126,7 @@ def show_run():
     # The load steps are the series' time: the .pvd times are the steps' alpha.
     step = PythonAnnotation(registrationName='load step', Input=garment)
     step.ArrayAssociation = 'Field Data'
-    step.Expression = "'load step %d of %d, alpha = %.4g' % (t_index, len(t_steps) - 1, t_value)"
+    step.Expression = "'load step %d of %d (pressure.csv step %d), alpha = %.4g' % (t_index + 1, len(t_steps), t_index, t_value)"
     step_display = Show(step, view)
     step_display.WindowLocation = 'Upper Right Corner'
     step_display.Color = [0.0, 0.0, 0.0]
