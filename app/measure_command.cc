@@ -1,4 +1,5 @@
 #include "app/measure_command.h"
+#include "core/number_text.h"
 
 #include "app/command_line.h"
 #include "body/anatomical_regions.h"
@@ -31,17 +32,11 @@ double units_scale(const std::string& word) {
   if (word == "m") return 1.0;
   if (word == "cm") return 0.01;
   if (word == "mm") return 0.001;
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(word, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != word.size() || !(value > 0))
+  const std::optional<double> value = whole_number(word);
+  if (!value || !(*value > 0))
     throw UsageError("--units needs m, cm, mm or a positive number of metres per unit, not '" +
                      word + "'");
-  return value;
+  return *value;
 }
 
 MeasureOptions parse(int argc, const char* const* argv) {

@@ -1,4 +1,5 @@
 #include "cases/body_region.h"
+#include "core/number_text.h"
 
 #include <cmath>
 #include <regex>
@@ -52,16 +53,9 @@ std::vector<std::string> split(const std::string& text, char separator) {
 }
 
 double number(const std::string& word, const std::string& what) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(word, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != word.size() || !std::isfinite(value))
-    throw std::invalid_argument(what + " '" + word + "' is not a number");
-  return value;
+  const std::optional<double> value = whole_number(word);
+  if (!value) throw std::invalid_argument(what + " '" + word + "' is not a number");
+  return *value;
 }
 
 Vec3 vector3(const std::string& word, const std::string& what) {

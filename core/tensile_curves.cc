@@ -1,4 +1,5 @@
 #include "core/tensile_curves.h"
+#include "core/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,16 +18,9 @@ std::string trimmed(const std::string& text) {
 
 double parse_number(const std::string& text, const std::string& entry, const std::string& piece,
                     const std::string& form) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value))
-    throw std::invalid_argument(entry + ": cannot read '" + piece + "' as " + form);
-  return value;
+  const std::optional<double> value = whole_number(text);
+  if (!value) throw std::invalid_argument(entry + ": cannot read '" + piece + "' as " + form);
+  return *value;
 }
 
 std::vector<double> strains(const std::vector<CurvePoint>& points) {

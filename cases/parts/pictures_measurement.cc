@@ -8,6 +8,7 @@
 #include "cases/body_surface_pressure.h"
 #include "cases/parts/part_entries.h"
 #include "cases/step_measurement.h"
+#include "core/number_text.h"
 #include "io/pressure_picture.h"
 
 #include <algorithm>
@@ -82,15 +83,19 @@ class PicturesMeasurement final : public Measurement {
     PressureSurface surface;
     if (settings_.on_body) {
       BodySurfacePressure body = body_surface_pressure(scenario, m);
-      surface = {std::move(body.surface.vertices_m), std::move(body.surface.triangles),
-                 std::move(body.pressure_Pa), std::move(body.under_garment)};
+      surface.points_m = std::move(body.surface.vertices_m);
+      surface.triangles = std::move(body.surface.triangles);
+      surface.pressure_Pa = std::move(body.pressure_Pa);
+      surface.has_pressure = std::move(body.under_garment);
       // Framed round the garment, its edge drawn over the body where no more than two of its
       // edges lie in front of it (the garment lies on the body).
       surface.frame_m = m.state.positions_m;
       surface.outline_depth_tolerance_m = 2 * scenario.mean_edge_length_m;
     } else {
-      surface = {m.state.positions_m, scenario.mesh.triangles, m.field.pressure_Pa,
-                 m.field.contact};
+      surface.points_m = m.state.positions_m;
+      surface.triangles = scenario.mesh.triangles;
+      surface.pressure_Pa = m.field.pressure_Pa;
+      surface.has_pressure = m.field.contact;
       surface.grey_means = "not in contact";
       surface.outline_depth_tolerance_m = scenario.mean_edge_length_m;
     }
@@ -163,16 +168,10 @@ PartEntry<MeasurementMaker> pictures_measurement_entry() {
     s.on_body = prm.get("Surface") == "body";
     s.every_step = prm.get_bool("Every step");
     for (const std::string& word : prm.get_list("Panels at alpha")) {
-      std::size_t used = 0;
-      double alpha = 0;
-      try {
-        alpha = std::stod(word, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != word.size() || !(alpha > 0))
+      const std::optional<double> alpha = whole_number(word);
+      if (!alpha || !(*alpha > 0))
         throw std::invalid_argument("Panels at alpha: '" + word + "' is not a positive number");
-      s.panel_alphas.push_back(alpha);
+      s.panel_alphas.push_back(*alpha);
     }
     s.style.width = prm.get_integer("Width");
     s.style.height = prm.get_integer("Height");

@@ -1,0 +1,20 @@
+#include "core/number_text.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tightfit {
+
+std::optional<double> whole_number(const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;  // no number at the start, or out of range
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+}  // namespace tightfit
