@@ -14,12 +14,18 @@
 namespace tightfit {
 
 struct Scenario {
+  Scenario() = default;
+  // `problem` points into the members below: a scenario is neither copied nor moved (made on
+  // the heap by make_scenario and kept there).
+  Scenario(const Scenario&) = delete;
+  Scenario& operator=(const Scenario&) = delete;
+
   CaseParameters parameters;
   Garment garment;
   SimulationMesh mesh;
   std::unique_ptr<MaterialLaw> law;
   std::unique_ptr<ScenarioBody> body;
-  Problem problem;  // points into the members above: the scenario never moves
+  Problem problem;  // points into the members above
   double mean_edge_length_m = 0.0;
   // Every load step's body morph parameter, the first the settling one.
   std::vector<double> alphas;

@@ -2,7 +2,7 @@
 #include "contact/body_mesh_error.h"
 #include "contact/ply_file_check.h"
 #include "contact/polygon_mesh.h"
-#include "contact/vtk_reader_run.h"
+#include "io/vtk_reader_run.h"
 
 #include <vtkCellArray.h>
 #include <vtkIdList.h>

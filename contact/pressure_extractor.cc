@@ -6,11 +6,6 @@
 
 namespace tightfit {
 
-const char* to_string(PressureDefinition definition) {
-  return definition == PressureDefinition::contact_traction ? "contact traction"
-                                                            : "garment force (paper)";
-}
-
 PressureField extract_pressure(const std::vector<Triangle>& triangles, const SurfaceState& state,
                                VertexAreaDefinition area_definition, const RigidBody* body,
                                PressureDefinition definition) {
@@ -72,7 +67,8 @@ PressureSummary summarize(const PressureField& field) {
   // below the mean, where E[p^2] - E[p]^2 would leave only round-off.
   double sum_squares = 0.0;
   for (std::size_t v = 0; v < field.pressure_Pa.size(); ++v)
-    if (field.contact[v]) sum_squares += (field.pressure_Pa[v] - s.mean_Pa) * (field.pressure_Pa[v] - s.mean_Pa);
+    if (field.contact[v])
+      sum_squares += (field.pressure_Pa[v] - s.mean_Pa) * (field.pressure_Pa[v] - s.mean_Pa);
   s.std_Pa = std::sqrt(sum_squares / s.n_contact);
   return s;
 }

@@ -15,29 +15,12 @@
 #include "contact/cylinder.h"
 #include "contact/rigid_body.h"
 #include "core/mesh_geometry.h"
+#include "core/pressure_field.h"
 #include "core/surface_state.h"
 
 #include <vector>
 
 namespace tightfit {
-
-enum class PressureDefinition {
-  contact_traction,  // the contact force along the body's normal (what a skin sensor reads)
-  garment_force,     // the garment's own force along its normal (the paper's Section 2.2)
-};
-const char* to_string(PressureDefinition definition);
-
-struct PressureField {
-  VertexAreaDefinition area_definition = VertexAreaDefinition::barycentric;
-  PressureDefinition definition = PressureDefinition::contact_traction;
-  std::vector<double> pressure_Pa;
-  std::vector<double> normal_force_N;  // the force pressing onto the body, by the definition
-  // |tangential contact force| / vertex area, Pa: the friction traction.
-  std::vector<double> friction_traction_Pa;
-  std::vector<double> vertex_area_m2;
-  std::vector<Vec3> normal;  // unit, pointing away from the body
-  std::vector<char> contact;
-};
 
 // `body` orients the normals (away from it) and gives the contact traction its normal; with no
 // body the triangles' winding does both.

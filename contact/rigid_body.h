@@ -2,6 +2,7 @@
 // cylinder, a cone, a plane or a body mesh alike (docs/bodies.md).
 #pragma once
 
+#include "core/pressure_field.h"
 #include "core/types.h"
 
 #include <cstdint>
@@ -55,12 +56,6 @@ struct QueryParts {
   bool closest_point = true;
   bool normal_derivative = true;
   bool location = true;
-};
-
-// A triangulated surface for drawing the body (ParaView output); not used for contact.
-struct DisplayMesh {
-  std::vector<Vec3> vertices_m;
-  std::vector<Triangle> triangles;
 };
 
 class RigidBody {

@@ -1,10 +1,8 @@
 #include "io/pvd_writer.h"
 
-#include "io/xml_text.h"
+#include "io/xml_file.h"
 
 #include <cstdio>
-#include <fstream>
-#include <stdexcept>
 #include <utility>
 
 namespace tightfit {
@@ -30,26 +28,17 @@ void PvdWriter::add(double time, const std::string& file, int part) {
 }
 
 void PvdWriter::rewrite() const {
-  const std::string temporary = path_ + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write ParaView collection '" + path_ + "'");
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-        << "  <Collection>\n";
-    for (const Entry& e : entries_)
-      out << "    <DataSet timestep=\"" << time_text(e.time) << "\" group=\"\" part=\"" << e.part
-          << "\" file=\"" << xml_escaped(e.file) << "\"/>\n";
-    out << "  </Collection>\n"
-        << "</VTKFile>\n";
-    out.close();
-    if (!out) throw std::runtime_error("cannot write ParaView collection '" + path_ + "'");
+  pugi::xml_document document;
+  pugi::xml_node collection =
+      add_vtk_file_root(document, "Collection", "0.1").append_child("Collection");
+  for (const Entry& e : entries_) {
+    pugi::xml_node data_set = collection.append_child("DataSet");
+    data_set.append_attribute("timestep") = time_text(e.time).c_str();
+    data_set.append_attribute("group") = "";
+    data_set.append_attribute("part") = e.part;
+    data_set.append_attribute("file") = e.file.c_str();
   }
-  // rename() replaces the old file in one step: a reader never sees half a collection.
-  if (std::rename(temporary.c_str(), path_.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write ParaView collection '" + path_ + "'");
-  }
+  save_xml_in_one_step(document, path_, "ParaView collection");
 }
 
 }  // namespace tightfit

@@ -1,60 +1,37 @@
 // SurfaceVtu::write_pvtu_header: the small XML file that makes pieces one dataset in ParaView.
 #include "io/vtu_writer.h"
-#include "io/xml_text.h"
-
-#include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <stdexcept>
+#include "io/xml_file.h"
 
 namespace tightfit {
 
 namespace {
 
-// The pieces are written by VTK in this machine's byte order; the header says the same.
-const char* host_byte_order() {
-  const std::uint16_t one = 1;
-  unsigned char first_byte;
-  std::memcpy(&first_byte, &one, 1);
-  return first_byte == 1 ? "LittleEndian" : "BigEndian";
+void declare_array(pugi::xml_node parent, const char* type, const std::string& name,
+                   int n_components) {
+  pugi::xml_node array = parent.append_child("PDataArray");
+  array.append_attribute("type") = type;
+  array.append_attribute("Name") = name.c_str();
+  array.append_attribute("NumberOfComponents") = n_components;
 }
 
 }  // namespace
 
 void SurfaceVtu::write_pvtu_header(const std::string& path,
                                    const std::vector<std::string>& piece_files) const {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write PVTU file '" + path + "'");
-    // The types are those write() gives VTK: doubles as Float64, flags as UInt8.
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"" << host_byte_order()
-        << "\" header_type=\"UInt64\">\n"
-        << "  <PUnstructuredGrid GhostLevel=\"0\">\n"
-        << "    <PPointData>\n";
-    for (const PointArray& a : point_arrays_)
-      out << "      <PDataArray type=\"" << (a.is_flag ? "UInt8" : "Float64") << "\" Name=\""
-          << xml_escaped(a.name) << "\" NumberOfComponents=\"" << a.n_components << "\"/>\n";
-    out << "    </PPointData>\n"
-        << "    <PCellData>\n"
-        << "    </PCellData>\n"
-        << "    <PPoints>\n"
-        << "      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
-        << "    </PPoints>\n";
-    for (const std::string& file : piece_files)
-      out << "    <Piece Source=\"" << xml_escaped(file) << "\"/>\n";
-    out << "  </PUnstructuredGrid>\n"
-        << "</VTKFile>\n";
-    out.close();
-    if (!out) throw std::runtime_error("cannot write PVTU file '" + path + "'");
-  }
-  // rename() replaces an old header in one step, as for the .pvd collections.
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write PVTU file '" + path + "'");
-  }
+  pugi::xml_document document;
+  pugi::xml_node root = add_vtk_file_root(document, "PUnstructuredGrid", "1.0");
+  root.append_attribute("header_type") = "UInt64";
+  pugi::xml_node grid = root.append_child("PUnstructuredGrid");
+  grid.append_attribute("GhostLevel") = 0;
+  // The types are those write() gives VTK: doubles as Float64, flags as UInt8.
+  pugi::xml_node point_data = grid.append_child("PPointData");
+  for (const PointArray& a : point_arrays_)
+    declare_array(point_data, a.is_flag ? "UInt8" : "Float64", a.name, a.n_components);
+  grid.append_child("PCellData");
+  declare_array(grid.append_child("PPoints"), "Float64", "Points", 3);
+  for (const std::string& file : piece_files)
+    grid.append_child("Piece").append_attribute("Source") = file.c_str();
+  save_xml_in_one_step(document, path, "PVTU file");
 }
 
 }  // namespace tightfit

@@ -1,7 +1,7 @@
 // VTK's XML reader; VTK stays inside this file.
 #include "io/triangle_vtu_reader.h"
 
-#include "contact/vtk_reader_run.h"
+#include "io/vtk_reader_run.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellType.h>

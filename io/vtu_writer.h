@@ -6,9 +6,8 @@
 // traction, a cross-backend difference) before writing.
 #pragma once
 
-#include "contact/pressure_extractor.h"
-#include "contact/rigid_body.h"
 #include "core/garment.h"
+#include "core/pressure_field.h"
 #include "core/surface_state.h"
 #include "core/types.h"
 

@@ -69,7 +69,7 @@ TEST_F(PvdFile, PlainTextListsTheFilesInOrder) {
   pvd.add(2.5, "body_0001.vtu");
   const std::string text = read_text(file);
   const std::regex dataset(
-      "<DataSet timestep=\"([^\"]*)\" group=\"\" part=\"0\" file=\"([^\"]*)\"/>");
+      "<DataSet timestep=\"([^\"]*)\" group=\"\" part=\"0\" file=\"([^\"]*)\" ?/>");
   std::vector<std::string> files, times;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), dataset);
        it != std::sregex_iterator(); ++it) {

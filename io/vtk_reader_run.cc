@@ -1,4 +1,4 @@
-#include "contact/vtk_reader_run.h"
+#include "io/vtk_reader_run.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
