@@ -69,6 +69,17 @@ testing::BodyCaseRun tube_on_cone(const std::string& backend, double mu,
                        backend);
 }
 
+// The friction forces over the normal forces, summed over the vertices in contact.
+double friction_over_normal_force(const StepMeasurement& m) {
+  double friction_N = 0.0, normal_N = 0.0;
+  for (std::size_t v = 0; v < m.field.pressure_Pa.size(); ++v)
+    if (m.field.contact[v]) {
+      friction_N += m.field.friction_traction_Pa[v] * m.field.vertex_area_m2[v];
+      normal_N += m.field.normal_force_N[v];
+    }
+  return friction_N / normal_N;
+}
+
 class TubeOnCone : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TubeOnCone, FrictionlessTubeSlidesOffTheNarrowEnd) {
@@ -95,20 +106,15 @@ TEST_P(TubeHoldingOnCone, HoldsWhenTanHalfAngleIsBelowMu) {
   const StepMeasurement& m = r.last();
   // The axial balance of the whole tube: with no axial membrane force at its free ends, the
   // friction forces (all up the meridian) add up to tan(a) times the normal forces.
-  double friction_N = 0.0, normal_N = 0.0;
-  for (std::size_t v = 0; v < m.field.pressure_Pa.size(); ++v)
-    if (m.field.contact[v]) {
-      friction_N += m.field.friction_traction_Pa[v] * m.field.vertex_area_m2[v];
-      normal_N += m.field.normal_force_N[v];
-    }
+  const double friction_ratio = friction_over_normal_force(m);
   std::printf(
       "%s, mu %.3f: shift %.2e m, contact fraction %.3f, friction / normal force %.5f "
       "(tan a %.3f)\n",
-      GetParam(), 1.25 * kTanHalfAngle, shift, m.summary.contact_fraction, friction_N / normal_N,
+      GetParam(), 1.25 * kTanHalfAngle, shift, m.summary.contact_fraction, friction_ratio,
       kTanHalfAngle);
   EXPECT_LT(std::abs(shift), 0.1 * slide_off_m());
   EXPECT_EQ(m.summary.contact_fraction, 1.0);
-  EXPECT_NEAR(friction_N / normal_N, kTanHalfAngle, 1e-3 * kTanHalfAngle);
+  EXPECT_NEAR(friction_ratio, kTanHalfAngle, 1e-3 * kTanHalfAngle);
 }
 
 TEST_P(TubeOnCone, SlidesWhenTanHalfAngleIsAboveMu) {
@@ -219,12 +225,7 @@ TEST(TubeOnConeBackends, QuadraticTrianglesHoldTheTubeAsLinearOnesDo) {
   const testing::BodyCaseRun& linear = plain_fem_holding_tube();
   ASSERT_TRUE(quadratic.run.completed && linear.run.completed) << quadratic.log << linear.log;
   const StepMeasurement& m = quadratic.last();
-  double friction_N = 0.0, normal_N = 0.0;
-  for (std::size_t v = 0; v < m.field.pressure_Pa.size(); ++v)
-    if (m.field.contact[v]) {
-      friction_N += m.field.friction_traction_Pa[v] * m.field.vertex_area_m2[v];
-      normal_N += m.field.normal_force_N[v];
-    }
+  const double friction_ratio = friction_over_normal_force(m);
   const double p_quadratic = m.p_mean_Pa(), p_linear = linear.last().p_mean_Pa();
   // Linear triangles inscribe each ring of n = 20 vertices in its circle: the hoop stretch
   // reads lambda s and a vertex feels its chords' force times s, s = sin(pi/n) / (pi/n), so the
@@ -247,7 +248,7 @@ TEST(TubeOnConeBackends, QuadraticTrianglesHoldTheTubeAsLinearOnesDo) {
       "the polygon's %.5f; shift %.2e m (linear %.2e m), friction / normal force %.5f (tan a "
       "%.3f)\n%s\n",
       p_quadratic, p_linear, p_linear / p_quadratic, polygon_ratio, shift,
-      linear.mean_shift_m(kAxis), friction_N / normal_N, kTanHalfAngle, m.report.text().c_str());
+      linear.mean_shift_m(kAxis), friction_ratio, kTanHalfAngle, m.report.text().c_str());
   // Measured: 160 nodes in contact, 140 slipping, in 43 Newton iterations; the tube settles
   // 0.65 mm down the cone (linear: 0.82 mm), held as the linear one is.
   EXPECT_EQ(m.summary.contact_fraction, 1.0);
@@ -255,7 +256,7 @@ TEST(TubeOnConeBackends, QuadraticTrianglesHoldTheTubeAsLinearOnesDo) {
   // Measured 0.30088: the nodal forces balance exactly, their recovered tractions summed over
   // the flat vertex areas to 2.9e-3 (the friction traction, largest at the slipping ends, is
   // recovered less smoothly than the pressure); 6e-3 allowed.
-  EXPECT_NEAR(friction_N / normal_N, kTanHalfAngle, 6e-3 * kTanHalfAngle);
+  EXPECT_NEAR(friction_ratio, kTanHalfAngle, 6e-3 * kTanHalfAngle);
   // Measured 0.95750 against 0.95268 (the remainder: the meridian's stretch, which friction
   // leaves here and the estimate leaves out, and the two tubes' slightly different places);
   // 1e-2 allowed.

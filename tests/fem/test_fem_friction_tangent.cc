@@ -11,6 +11,7 @@
 #include "contact/penalty_contact.h"
 #include "fem/contact_set_prediction.h"
 #include "fem/fem_backend.h"
+#include "residual_jacobian.h"
 #include "tests/contact/body_mesh_files.h"
 #include "tube_problem.h"
 
@@ -55,7 +56,7 @@ RandomStateCounts check_random_states(const RigidBody& body, const Vec3& centre,
                                       unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
-  const double h = 1e-7, kA = 2e3;
+  const double kA = 2e3;
   RandomStateCounts counts;
   for (int i = 0; i < n_states; ++i) {
     const Vec3 near = centre + 0.02 * Vec3(sym(random), sym(random), sym(random));
@@ -210,18 +211,7 @@ TEST(FemFrictionTangent, AssembledTangentMatchesFiniteDifferencesOnBothBranches)
     held.backend->linearise(x, R, K);
     const Branches b = branches_at(held, x, R);
     const int n = static_cast<int>(R.size());
-    Eigen::MatrixXd K_fd(n, n);
-    const double h = 1e-9;
-    for (int j = 0; j < n; ++j) {
-      std::vector<Vec3> xp = x, xm = x;
-      xp[j / 3][j % 3] += h;
-      xm[j / 3][j % 3] -= h;
-      Eigen::VectorXd Rp, Rm;
-      Eigen::MatrixXd unused;
-      held.backend->linearise(xp, Rp, unused);
-      held.backend->linearise(xm, Rm, unused);
-      K_fd.col(j) = (Rp - Rm) / (2 * h);
-    }
+    const Eigen::MatrixXd K_fd = testing::residual_jacobian(*held.backend, x, 1e-9);
     const double error = (K - K_fd).norm() / K.norm();
     const double asymmetry = (K - K.transpose()).norm() / K.norm();
     std::printf(
