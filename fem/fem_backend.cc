@@ -54,11 +54,6 @@ const Problem& checked(const Problem& problem, const FemParameters& parameters) 
           "Finite elements/Linear solver = " + std::string(to_string(parameters.linear_solver)) +
           ": Contact/Friction coefficient > 0 makes the tangent unsymmetric; use direct (MUMPS "
           "LU), gmres-amg or gmres-gamg");
-    if (parameters.element_degree != 1)
-      throw std::invalid_argument(
-          "Finite elements/Element degree = " + std::to_string(parameters.element_degree) +
-          ": friction is applied with linear triangles only (degree 1); set it to 1 or "
-          "Contact/Friction coefficient to 0");
   }
   return problem;
 }

@@ -55,9 +55,15 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
 // contact force and the weight f_g, so its normal load is lambda + f_g . n_body (the weight
 // lessens it where it presses, n_body . g < 0). That load is recovered as a second traction
 // t_g and the internal force becomes -(t_g A_v) n_v.
+//
+// With friction the nodal tangential forces are consistent loads too: each Cartesian component
+// is recovered the same way, and each vertex gets the recovered friction traction's part
+// tangent to the body there times A_v in its contact force (the extractor's friction traction).
 void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
                                   const DofVector& x, const std::vector<double>& multiplier_N,
-                                  const std::vector<Vec3>& gravity_load_N, FemSurfaceOutput& out) {
+                                  const std::vector<Vec3>& gravity_load_N,
+                                  const std::vector<Vec3>& friction_force_N,
+                                  FemSurfaceOutput& out) {
   const SimulationMesh& mesh = *pattern.whole_mesh;  // degree 2: on every rank
   const int n = mesh.n_vertices;
   SurfaceQuadrature quadrature;
@@ -115,6 +121,19 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
     for (int k = 0; k < pattern.n_nodes(); ++k) garment_load_N[k] += weight_N[k];
     garment_traction = recover_traction_Pa(n, quadrature, hat_loads(garment_load_N));
   }
+  // Frictionless, the tangential forces are all zero: nothing to recover.
+  std::vector<Vec3> friction_traction_Pa;
+  if (std::any_of(friction_force_N.begin(), friction_force_N.end(),
+                  [](const Vec3& f) { return f != Vec3::Zero(); })) {
+    friction_traction_Pa.assign(n, Vec3::Zero());
+    std::vector<double> component_N(friction_force_N.size());
+    for (int c = 0; c < 3; ++c) {
+      for (std::size_t k = 0; k < friction_force_N.size(); ++k)
+        component_N[k] = friction_force_N[k][c];
+      const std::vector<double> t = recover_traction_Pa(n, quadrature, hat_loads(component_N));
+      for (int w = 0; w < n; ++w) friction_traction_Pa[w][c] = t[w];
+    }
+  }
 
   // A vertex touches the body where its own node or a midpoint of one of its edges does.
   std::vector<char> touching(n, 0);
@@ -140,6 +159,10 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
     out.contact_traction_Pa[w] = traction[w];
     state.internal_force_N[w] = -(garment_traction[w] * area[w]) * n_v;
     state.contact_force_N[w] = traction[w] * area[w] * s.outward_normal;
+    if (!friction_traction_Pa.empty()) {
+      const Vec3& t = friction_traction_Pa[w];
+      state.contact_force_N[w] += area[w] * (t - t.dot(s.outward_normal) * s.outward_normal);
+    }
   }
 }
 
@@ -155,7 +178,8 @@ FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssemb
   if (pattern.element_degree == 1)
     fill_from_multipliers(pattern, assembly, body, x, multiplier_N, friction_force_N, out);
   else
-    fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, out);
+    fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, friction_force_N,
+                                 out);
   return out;
 }
 

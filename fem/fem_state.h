@@ -23,8 +23,9 @@ struct FemSurfaceOutput {
 
 // `gravity_load_N`: per node, the weight the garment carries in this step (empty without
 // gravity); degree 2 needs it to tell the garment's own force from the contact force.
-// `friction_force_N`: per node, the tangential contact force (degree 1 only; zero without
-// friction): it joins the contact force, where the extractor reads it as friction traction.
+// `friction_force_N`: per node, the tangential contact force (empty or zero without friction):
+// it joins the contact force, where the extractor reads it as friction traction (degree 2: the
+// traction recovered from the nodal forces, as for the normal one).
 // `x` is this rank's part of the positions, `multiplier_N` and `friction_force_N` every node's
 // (PatternMesh::gather_nodes): every rank builds the whole output.
 FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,

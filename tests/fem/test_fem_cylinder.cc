@@ -4,6 +4,7 @@
 #include "cases/cylinder_theory.h"
 #include "core/mesh_geometry.h"
 #include "fem/fem_backend.h"
+#include "residual_jacobian.h"
 #include "tube_problem.h"
 
 #include <gtest/gtest.h>
@@ -77,18 +78,7 @@ TEST(FemAssembly, TangentMatchesFiniteDifferencesOfTheResidual) {
     Eigen::MatrixXd K;
     backend.linearise(x, R, K);
     const int n = static_cast<int>(R.size());
-    Eigen::MatrixXd K_fd(n, n);
-    const double h = 1e-7;
-    for (int j = 0; j < n; ++j) {
-      std::vector<Vec3> xp = x, xm = x;
-      xp[j / 3][j % 3] += h;
-      xm[j / 3][j % 3] -= h;
-      Eigen::VectorXd Rp, Rm;
-      Eigen::MatrixXd unused;
-      backend.linearise(xp, Rp, unused);
-      backend.linearise(xm, Rm, unused);
-      K_fd.col(j) = (Rp - Rm) / (2 * h);
-    }
+    const Eigen::MatrixXd K_fd = testing::residual_jacobian(backend, x, 1e-7);
     std::printf("%s: %d nodes (%d vertices), |K - K_fd| / |K| = %.2e\n", law.c_str(), n / 3,
                 tube.mesh.n_vertices, (K - K_fd).norm() / K.norm());
     EXPECT_LT((K - K_fd).norm(), 1e-6 * K.norm()) << law;
