@@ -1,0 +1,52 @@
+// A body mesh shrunk about its skeleton (docs/dressing.md "The body shrunk about its
+// skeleton"): each vertex moves towards the axis of the body part it belongs to (the torso's,
+// an arm's, a leg's), its distance from that axis times the scale, its position along the axis
+// kept, so that the limbs thin about their own axes and open room between them and the torso.
+// A vertex belongs to the bone whose segment is nearest; within `blend_m` of a tie (the
+// shoulders, the armpits, the crotch) the directions of the bones within reach are blended with
+// weights falling linearly from the nearest (w_k = max(0, 1 - (d_k - d_min) / blend), summed to
+// one), so the shrunk mesh stays continuous where parts join:
+//   y' = y + (s - 1) sum_k w_k (y - foot_k(y)),
+// foot_k the foot of the perpendicular from y onto bone k's line. Scale 1 is the identity.
+#pragma once
+
+#include "core/types.h"
+
+#include <string>
+#include <vector>
+
+namespace tightfit {
+
+struct SkeletonBone {
+  std::string name;  // torso, arm left, ...
+  Vec3 root_m = Vec3::Zero();
+  Vec3 end_m = Vec3::UnitZ();  // not at the root
+};
+
+class SkeletonShrink {
+ public:
+  // Throws std::invalid_argument for no bones, a bone of zero length or a blend below zero.
+  SkeletonShrink(std::vector<Vec3> vertices_m, std::vector<SkeletonBone> bones,
+                 double blend_m = 0.03);
+
+  // The vertices shrunk to `scale` (> 0; 1 gives them back unchanged).
+  std::vector<Vec3> positions_m(double scale) const;
+  // The bone each vertex belongs to most (its largest weight), by index into bones().
+  const std::vector<int>& nearest_bone() const { return nearest_; }
+  const std::vector<SkeletonBone>& bones() const { return bones_; }
+  // The largest distance of a vertex from its blended axis: how far a vertex moves per unit of
+  // scale, m.
+  double reach_m() const { return reach_m_; }
+
+ private:
+  std::vector<Vec3> vertices_m_;
+  std::vector<SkeletonBone> bones_;
+  std::vector<Vec3> radial_m_;  // sum_k w_k (y - foot_k(y)) per vertex
+  std::vector<int> nearest_;
+  double reach_m_ = 0.0;
+};
+
+// The distance from x to the segment from a to b, m.
+double distance_to_segment_m(const Vec3& x, const Vec3& a, const Vec3& b);
+
+}  // namespace tightfit
