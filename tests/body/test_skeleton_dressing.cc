@@ -4,6 +4,7 @@
 // two trouser legs, each tube two flat panels placed in front of and behind its body part as a
 // pattern file's arrangement places them. Every panel starts outside the body shrunk about its
 // skeleton; the dressing closes every seam; each sleeve ends round its own arm.
+#include "body/anatomical_regions.h"
 #include "body/body_measurements.h"
 #include "body/garment_arrangement.h"
 #include "contact/penalty_contact.h"
@@ -100,6 +101,33 @@ TriangleSurface person_of_pieces(double angle_deg) {
     }
   }
   return all;
+}
+
+TEST(NamedRegions, UpperArmIsABandRoundEachArmAtItsGirthLine) {
+  // A point on each arm's surface at its upper-arm girth line lies in that side's band (within
+  // its radius of the axis, between its ends); the torso's side at that height does not.
+  const BodyMeasurements body = measure_body(testing::synthetic_person(45.0));
+  const auto inside = [](const RegionPiece& p, const Vec3& x) {
+    const Vec3 d = x - p.point_m;
+    const double t = d.dot(p.axis);
+    return t >= p.low_m && t <= p.high_m && (d - t * p.axis).norm() <= p.radius_m;
+  };
+  for (int side = 0; side < 2; ++side) {
+    const std::string s = side == 0 ? " left" : " right";
+    AnatomyRequest request;
+    request.name = "upper arm";
+    request.side = side;
+    const std::vector<RegionPiece> band = anatomical_region(body, request);
+    ASSERT_EQ(band.size(), 1u);
+    const BodyGirth& line = body.girth("upper arm" + s);
+    const Vec3 on_arm = line.centre_m + SyntheticPerson::arm_r * Vec3(0, -1, 0);
+    EXPECT_TRUE(inside(band[0], on_arm)) << s;
+    const Vec3 torso_side(0, -SyntheticPerson::torso_b, line.centre_m.z());
+    EXPECT_FALSE(inside(band[0], torso_side)) << s;
+  }
+  AnatomyRequest both;
+  both.name = "upper arm";
+  EXPECT_EQ(anatomical_region(body, both).size(), 2u);
 }
 
 // A rectangle panel `width` round by `length` along, placed flat: rest (x, y) at
