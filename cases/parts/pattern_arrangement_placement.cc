@@ -67,14 +67,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     prm.declare_double("Skeleton blend", 0.03, 0, 1,
                        "Where two parts' axes are within this of equally near (shoulders, "
                        "armpits, crotch), a vertex shrinks towards both, blended (m).");
-    prm.declare_integer("Growth frames", 2000, 0, 100000000,
-                        "RK4 frames over which the body grows linearly to its own size.");
-    prm.declare_integer("Seam ramp frames", 500, 0, 100000000,
-                        "RK4 frames over which the seam springs' stiffness rises linearly from "
-                        "zero to full.");
-    prm.declare_integer("Maximum frames", 40000, 1, 100000000,
-                        "Frames the seams have to close in; beyond them the dressing fails "
-                        "naming the seam with the widest gap.");
+    declare_dressing_frames(prm);
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
     MeshImportOptions pattern_frame;
@@ -90,9 +83,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     const double blend_m = prm.get_double("Skeleton blend");
     DressingSettings settings;
     settings.start_scale = prm.get_double("Start scale");
-    settings.growth_frames = prm.get_integer("Growth frames");
-    settings.seam_ramp_frames = prm.get_integer("Seam ramp frames");
-    settings.maximum_frames = prm.get_integer("Maximum frames");
+    read_dressing_frames(prm, settings);
     settings.progress = &std::cout;
     return [=](const Scenario& scenario) {
       const BodyMeasurements body = measured(surface_of(scenario.body->body()), "case's body");
