@@ -21,8 +21,9 @@ SkeletonShrink::SkeletonShrink(std::vector<Vec3> vertices_m, std::vector<Skeleto
       throw std::invalid_argument("skeleton bone '" + bone.name + "' has zero length");
   if (!(blend_m >= 0)) throw std::invalid_argument("a skeleton's blend width must not be negative");
   const std::size_t n = bones_.size();
-  radial_m_.resize(vertices_m_.size());
+  shares_.resize(vertices_m_.size());
   nearest_.resize(vertices_m_.size());
+  raise_axis_.assign(n, Vec3::Zero());
   std::vector<double> distance(n);
   for (std::size_t i = 0; i < vertices_m_.size(); ++i) {
     const Vec3& y = vertices_m_[i];
@@ -34,7 +35,6 @@ SkeletonShrink::SkeletonShrink(std::vector<Vec3> vertices_m, std::vector<Skeleto
         nearest_[i] = static_cast<int>(k);
       }
     }
-    Vec3 radial = Vec3::Zero();
     double total = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       const double w = blend_m > 0 ? std::max(0.0, 1.0 - (distance[k] - d_min) / blend_m)
@@ -42,18 +42,53 @@ SkeletonShrink::SkeletonShrink(std::vector<Vec3> vertices_m, std::vector<Skeleto
       if (w <= 0) continue;
       const Vec3 a = (bones_[k].end_m - bones_[k].root_m).normalized();
       const Vec3 from_root = y - bones_[k].root_m;
-      radial += w * (from_root - from_root.dot(a) * a);
+      shares_[i].push_back({static_cast<int>(k), w, from_root - from_root.dot(a) * a});
       total += w;
     }
-    radial_m_[i] = radial / total;
-    reach_m_ = std::max(reach_m_, radial_m_[i].norm());
+    Vec3 radial = Vec3::Zero();
+    for (Share& share : shares_[i]) {
+      share.weight /= total;
+      radial += share.weight * share.radial_m;
+    }
+    reach_m_ = std::max(reach_m_, radial.norm());
   }
+}
+
+void SkeletonShrink::set_arm_raise(double radians_per_unit, const Vec3& up) {
+  if (!(radians_per_unit >= 0)) throw std::invalid_argument("an arm raise must not be negative");
+  raise_per_unit_ = radians_per_unit;
+  raise_reach_m_ = 0.0;
+  for (std::size_t k = 0; k < bones_.size(); ++k) {
+    raise_axis_[k] = Vec3::Zero();
+    if (bones_[k].name.rfind("arm", 0) != 0) continue;
+    const Vec3 a = (bones_[k].end_m - bones_[k].root_m).normalized();
+    const Vec3 axis = a.cross(up.normalized());
+    if (axis.norm() > 1e-6) raise_axis_[k] = axis.normalized();
+  }
+  for (std::size_t i = 0; i < vertices_m_.size(); ++i)
+    for (const Share& share : shares_[i])
+      if (raise_axis_[share.bone].norm() > 0)
+        raise_reach_m_ =
+            std::max(raise_reach_m_, (vertices_m_[i] - bones_[share.bone].root_m).norm());
 }
 
 std::vector<Vec3> SkeletonShrink::positions_m(double scale) const {
   if (!(scale > 0)) throw std::invalid_argument("a body's scale must be positive");
-  std::vector<Vec3> x(vertices_m_.size());
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = vertices_m_[i] + (scale - 1.0) * radial_m_[i];
+  std::vector<Mat3> turn(bones_.size(), Mat3::Identity());
+  for (std::size_t k = 0; k < bones_.size(); ++k)
+    if (raise_axis_[k].norm() > 0 && scale != 1.0)
+      turn[k] =
+          Eigen::AngleAxisd(raise_per_unit_ * (1.0 - scale), raise_axis_[k]).toRotationMatrix();
+  std::vector<Vec3> x = vertices_m_;
+  if (scale == 1.0) return x;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (const Share& share : shares_[i]) {
+      // The displacement w_k (T_k(y) - y), T_k(y) = root + Q (y + (s - 1) r - root).
+      const Vec3 shrunk_from_root =
+          vertices_m_[i] - bones_[share.bone].root_m + (scale - 1.0) * share.radial_m;
+      x[i] += share.weight * ((scale - 1.0) * share.radial_m +
+                              (turn[share.bone] - Mat3::Identity()) * shrunk_from_root);
+    }
   return x;
 }
 

@@ -8,6 +8,11 @@
 // one), so the shrunk mesh stays continuous where parts join:
 //   y' = y + (s - 1) sum_k w_k (y - foot_k(y)),
 // foot_k the foot of the perpendicular from y onto bone k's line. Scale 1 is the identity.
+// With an arm raise r (radians per unit of 1 - s), an arm's bone also turns its share of the
+// vertex about the bone's root by the angle r (1 - s), away from the torso's axis `up`
+// (abduction, towards a T-pose), so that the arms leave the torso's sides at the start:
+//   y' = sum_k w_k (root_k + Q_k (y + (s - 1)(y - foot_k(y)) - root_k)),
+// Q_k that rotation (the identity for every other bone).
 #pragma once
 
 #include "core/types.h"
@@ -29,6 +34,11 @@ class SkeletonShrink {
   SkeletonShrink(std::vector<Vec3> vertices_m, std::vector<SkeletonBone> bones,
                  double blend_m = 0.03);
 
+  // Turns the arms (bones named "arm ...") by `radians_per_unit` (1 - s) away from `up` (the
+  // torso's direction) as the body shrinks to s; 0 (the default) keeps them. Throws
+  // std::invalid_argument for a negative rate.
+  void set_arm_raise(double radians_per_unit, const Vec3& up = Vec3::UnitZ());
+
   // The vertices shrunk to `scale` (> 0; 1 gives them back unchanged).
   std::vector<Vec3> positions_m(double scale) const;
   // The bone each vertex belongs to most (its largest weight), by index into bones().
@@ -36,14 +46,23 @@ class SkeletonShrink {
   const std::vector<SkeletonBone>& bones() const { return bones_; }
   // The largest distance of a vertex from its blended axis: how far a vertex moves per unit of
   // scale, m.
-  double reach_m() const { return reach_m_; }
+  double reach_m() const { return reach_m_ + raise_per_unit_ * raise_reach_m_; }
 
  private:
   std::vector<Vec3> vertices_m_;
   std::vector<SkeletonBone> bones_;
-  std::vector<Vec3> radial_m_;  // sum_k w_k (y - foot_k(y)) per vertex
+  // Each vertex's bones within the blend: bone, weight and y - foot_k(y).
+  struct Share {
+    int bone;
+    double weight;
+    Vec3 radial_m;
+  };
+  std::vector<std::vector<Share>> shares_;
   std::vector<int> nearest_;
-  double reach_m_ = 0.0;
+  std::vector<Vec3> raise_axis_;  // per bone: the unit axis an arm turns about (zero: none)
+  double raise_per_unit_ = 0.0;
+  double reach_m_ = 0.0;        // of the shrink alone
+  double raise_reach_m_ = 0.0;  // the farthest an arm's vertex lies from its bone's root
 };
 
 // The distance from x to the segment from a to b, m.

@@ -14,8 +14,11 @@ namespace tightfit {
 class SkeletonShrunkBody final : public ShrinkingBody {
  public:
   // `surface` is the whole body's mesh (closed); throws as SkeletonShrink and MeshBody do.
+  // `arm_raise_per_unit`: SkeletonShrink::set_arm_raise's rate (radians per unit of 1 - s),
+  // the torso's direction `up`.
   SkeletonShrunkBody(TriangleSurface surface, std::vector<SkeletonBone> bones,
-                     double blend_m = 0.03, double step = 0.01);
+                     double blend_m = 0.03, double step = 0.005, double arm_raise_per_unit = 0.0,
+                     const Vec3& up = Vec3::UnitZ());
 
   void set_scale(double scale) override;
   double scale() const override { return scale_; }

@@ -50,8 +50,14 @@ std::unique_ptr<ShrinkingBody> shrinking_body(const RigidBody& whole,
     TriangleSurface surface;
     surface.vertices_m = mesh.vertices_m;
     surface.triangles = mesh.triangles;
+    Vec3 up = Vec3::UnitZ();
+    for (const SkeletonBone& bone : settings.skeleton)
+      if (bone.name == "torso") up = (bone.end_m - bone.root_m).normalized();
+    const double per_unit = settings.start_scale < 1.0
+                                ? settings.skeleton_arm_raise_rad / (1.0 - settings.start_scale)
+                                : 0.0;
     return std::make_unique<SkeletonShrunkBody>(std::move(surface), settings.skeleton,
-                                                settings.skeleton_blend_m);
+                                                settings.skeleton_blend_m, 0.005, per_unit, up);
   }
   if (settings.scale_axis)
     return std::make_unique<ScaledBody>(whole, settings.centre_m, *settings.scale_axis);

@@ -11,6 +11,7 @@
 #include "contact/polygon_mesh.h"
 #include "massspring/dressing.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -67,6 +68,10 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     prm.declare_double("Skeleton blend", 0.03, 0, 1,
                        "Where two parts' axes are within this of equally near (shoulders, "
                        "armpits, crotch), a vertex shrinks towards both, blended (m).");
+    prm.declare_double("Arm raise", 30, 0, 80,
+                       "At the start the arms are turned this far away from the torso about "
+                       "their shoulders (degrees), and back as the body grows, so that the "
+                       "torso's side seams find room under them.");
     declare_dressing_frames(prm);
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
@@ -81,6 +86,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       reference = import_surface(read_polygon_mesh(file), options);
     }
     const double blend_m = prm.get_double("Skeleton blend");
+    const double arm_raise_rad = prm.get_double("Arm raise") * M_PI / 180.0;
     DressingSettings settings;
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
@@ -98,6 +104,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       DressingSettings dressing = settings;
       dressing.skeleton = skeleton_bones(body);
       dressing.skeleton_blend_m = blend_m;
+      dressing.skeleton_arm_raise_rad = arm_raise_rad;
       std::vector<Vec3> start;
       try {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);

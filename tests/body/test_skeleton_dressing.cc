@@ -76,6 +76,34 @@ TEST(SkeletonShrink, ALimbsVertexMovesTowardsItsOwnAxisOnly) {
   }
 }
 
+TEST(SkeletonShrink, ARaisedArmTurnsAboutItsShoulderAwayFromTheTorso) {
+  // With an arm raise, a point on an arm (away from the joints) shrunk to s keeps its distance
+  // from the bone's root apart from the shrink across the axis (a rotation about the root keeps
+  // lengths: |T(y) - root| = |y_s - root|, 1e-12 m), and the arm's end rises (its height above
+  // the root grows, as a turn towards a T-pose must).
+  const TriangleSurface person = testing::synthetic_person(45.0);
+  const std::vector<SkeletonBone> bones = skeleton_bones(measure_body(person));
+  std::vector<Vec3> points;
+  std::vector<int> arm;
+  for (int k = 0; k < static_cast<int>(bones.size()); ++k)
+    if (bones[k].name.rfind("arm", 0) == 0) {
+      points.push_back(bones[k].root_m + 0.6 * (bones[k].end_m - bones[k].root_m) +
+                       SyntheticPerson::arm_r * Vec3(0, -1, 0));
+      arm.push_back(k);
+    }
+  SkeletonShrink shrink(points, bones);
+  const double s = 0.6, raise = (30 * M_PI / 180) / (1 - s);
+  shrink.set_arm_raise(raise);
+  const std::vector<Vec3> plain = SkeletonShrink(points, bones).positions_m(s);
+  const std::vector<Vec3> raised = shrink.positions_m(s);
+  ASSERT_EQ(points.size(), 2u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& root = bones[arm[i]].root_m;
+    EXPECT_NEAR((raised[i] - root).norm(), (plain[i] - root).norm(), 1e-12);
+    EXPECT_GT(raised[i].z() - root.z(), plain[i].z() - root.z() + 0.05) << bones[arm[i]].name;
+  }
+}
+
 // The synthetic person's parts (synthetic_body.cc) as one surface of separate closed pieces,
 // not their union (whose corefinement leaves faces of no area, which a contact body refuses).
 TriangleSurface person_of_pieces(double angle_deg) {
