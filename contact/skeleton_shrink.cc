@@ -6,6 +6,11 @@
 
 namespace tightfit {
 
+namespace {
+// How far along an arm from its root its turn grows to the full angle, m.
+constexpr double raise_ramp_m = 0.08;
+}  // namespace
+
 double distance_to_segment_m(const Vec3& x, const Vec3& a, const Vec3& b) {
   const Vec3 d = b - a;
   const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
@@ -42,7 +47,8 @@ SkeletonShrink::SkeletonShrink(std::vector<Vec3> vertices_m, std::vector<Skeleto
       if (w <= 0) continue;
       const Vec3 a = (bones_[k].end_m - bones_[k].root_m).normalized();
       const Vec3 from_root = y - bones_[k].root_m;
-      shares_[i].push_back({static_cast<int>(k), w, from_root - from_root.dot(a) * a});
+      shares_[i].push_back(
+          {static_cast<int>(k), w, from_root - from_root.dot(a) * a, from_root.dot(a)});
       total += w;
     }
     Vec3 radial = Vec3::Zero();
@@ -74,11 +80,6 @@ void SkeletonShrink::set_arm_raise(double radians_per_unit, const Vec3& up) {
 
 std::vector<Vec3> SkeletonShrink::positions_m(double scale) const {
   if (!(scale > 0)) throw std::invalid_argument("a body's scale must be positive");
-  std::vector<Mat3> turn(bones_.size(), Mat3::Identity());
-  for (std::size_t k = 0; k < bones_.size(); ++k)
-    if (raise_axis_[k].norm() > 0 && scale != 1.0)
-      turn[k] =
-          Eigen::AngleAxisd(raise_per_unit_ * (1.0 - scale), raise_axis_[k]).toRotationMatrix();
   std::vector<Vec3> x = vertices_m_;
   if (scale == 1.0) return x;
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -86,8 +87,15 @@ std::vector<Vec3> SkeletonShrink::positions_m(double scale) const {
       // The displacement w_k (T_k(y) - y), T_k(y) = root + Q (y + (s - 1) r - root).
       const Vec3 shrunk_from_root =
           vertices_m_[i] - bones_[share.bone].root_m + (scale - 1.0) * share.radial_m;
-      x[i] += share.weight * ((scale - 1.0) * share.radial_m +
-                              (turn[share.bone] - Mat3::Identity()) * shrunk_from_root);
+      Vec3 moved = (scale - 1.0) * share.radial_m;
+      if (raise_axis_[share.bone].norm() > 0) {
+        const double ramp = std::clamp(share.along_m / raise_ramp_m, 0.0, 1.0);
+        const Mat3 turn =
+            Eigen::AngleAxisd(raise_per_unit_ * (1.0 - scale) * ramp, raise_axis_[share.bone])
+                .toRotationMatrix();
+        moved += (turn - Mat3::Identity()) * shrunk_from_root;
+      }
+      x[i] += share.weight * moved;
     }
   return x;
 }

@@ -12,7 +12,9 @@
 // vertex about the bone's root by the angle r (1 - s), away from the torso's axis `up`
 // (abduction, towards a T-pose), so that the arms leave the torso's sides at the start:
 //   y' = sum_k w_k (root_k + Q_k (y + (s - 1)(y - foot_k(y)) - root_k)),
-// Q_k that rotation (the identity for every other bone).
+// Q_k that rotation (the identity for every other bone). The turn grows from nothing at the
+// shoulder (the bone's root) to its full angle 8 cm along the arm, so the shoulder blade and
+// the chest, nearer the arm's root than the torso's axis, do not swing with it.
 #pragma once
 
 #include "core/types.h"
@@ -56,6 +58,7 @@ class SkeletonShrink {
     int bone;
     double weight;
     Vec3 radial_m;
+    double along_m;  // (y - root_k) . a_k: how far past the bone's root
   };
   std::vector<std::vector<Share>> shares_;
   std::vector<int> nearest_;
