@@ -82,12 +82,22 @@ std::vector<Vec3> SkeletonShrink::positions_m(double scale) const {
   if (!(scale > 0)) throw std::invalid_argument("a body's scale must be positive");
   std::vector<Vec3> x = vertices_m_;
   if (scale == 1.0) return x;
+  int torso = -1;
+  for (std::size_t k = 0; k < bones_.size(); ++k)
+    if (bones_[k].name == "torso") torso = static_cast<int>(k);
+  const bool shorten = shorten_torso_ && torso >= 0;
+  const Vec3 centre =
+      shorten ? Vec3(0.5 * (bones_[torso].root_m + bones_[torso].end_m)) : Vec3::Zero();
   for (std::size_t i = 0; i < x.size(); ++i)
     for (const Share& share : shares_[i]) {
       // The displacement w_k (T_k(y) - y), T_k(y) = root + Q (y + (s - 1) r - root).
       const Vec3 shrunk_from_root =
           vertices_m_[i] - bones_[share.bone].root_m + (scale - 1.0) * share.radial_m;
       Vec3 moved = (scale - 1.0) * share.radial_m;
+      if (shorten && share.bone == torso)
+        moved = (scale - 1.0) * (vertices_m_[i] - centre);  // about the middle, every way
+      else if (shorten)
+        moved += (scale - 1.0) * (bones_[share.bone].root_m - centre);  // with its root
       if (raise_axis_[share.bone].norm() > 0) {
         const double ramp = std::clamp(share.along_m / raise_ramp_m, 0.0, 1.0);
         const Mat3 turn =

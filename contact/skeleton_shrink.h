@@ -41,6 +41,13 @@ class SkeletonShrink {
   // std::invalid_argument for a negative rate.
   void set_arm_raise(double radians_per_unit, const Vec3& up = Vec3::UnitZ());
 
+  // With `on`, the torso shrinks about its bone's middle along its axis too (the neck and
+  // shoulders lower, the crotch rises by (1 - s) half the torso's length) and each limb moves
+  // with its root: a limb's share of a vertex is moved as the torso moves the limb's root, then
+  // shrunk (and turned) about that root, so that shoulder seams find room over the shoulders.
+  // Off by default.
+  void set_torso_shortening(bool on) { shorten_torso_ = on; }
+
   // The vertices shrunk to `scale` (> 0; 1 gives them back unchanged).
   std::vector<Vec3> positions_m(double scale) const;
   // The bone each vertex belongs to most (its largest weight), by index into bones().
@@ -64,6 +71,7 @@ class SkeletonShrink {
   std::vector<int> nearest_;
   std::vector<Vec3> raise_axis_;  // per bone: the unit axis an arm turns about (zero: none)
   double raise_per_unit_ = 0.0;
+  bool shorten_torso_ = false;
   double reach_m_ = 0.0;        // of the shrink alone
   double raise_reach_m_ = 0.0;  // the farthest an arm's vertex lies from its bone's root
 };

@@ -18,7 +18,7 @@ class SkeletonShrunkBody final : public ShrinkingBody {
   // the torso's direction `up`.
   SkeletonShrunkBody(TriangleSurface surface, std::vector<SkeletonBone> bones,
                      double blend_m = 0.03, double step = 0.005, double arm_raise_per_unit = 0.0,
-                     const Vec3& up = Vec3::UnitZ());
+                     const Vec3& up = Vec3::UnitZ(), bool shorten_torso = false);
 
   void set_scale(double scale) override;
   double scale() const override { return scale_; }

@@ -57,7 +57,8 @@ std::unique_ptr<ShrinkingBody> shrinking_body(const RigidBody& whole,
                                 ? settings.skeleton_arm_raise_rad / (1.0 - settings.start_scale)
                                 : 0.0;
     return std::make_unique<SkeletonShrunkBody>(std::move(surface), settings.skeleton,
-                                                settings.skeleton_blend_m, 0.005, per_unit, up);
+                                                settings.skeleton_blend_m, 0.005, per_unit, up,
+                                                settings.skeleton_shortens_torso);
   }
   if (settings.scale_axis)
     return std::make_unique<ScaledBody>(whole, settings.centre_m, *settings.scale_axis);

@@ -31,8 +31,9 @@ struct DressingSettings {
   // grows (SkeletonShrink::set_arm_raise), radians; the torso's direction along skeleton[0]'s
   // bone named "torso" (z when there is none).
   double skeleton_arm_raise_rad = 0.0;
-  double start_scale = 0.7;    // the body's scale at the first frame (0, 1]
-  int growth_frames = 2000;    // frames over which the scale rises linearly to 1
+  bool skeleton_shortens_torso = false;  // SkeletonShrink::set_torso_shortening
+  double start_scale = 0.7;              // the body's scale at the first frame (0, 1]
+  int growth_frames = 2000;              // frames over which the scale rises linearly to 1
   int seam_ramp_frames = 500;  // frames over which the seam stiffness rises linearly to full
   // The seams are closed when every seam vertex pair is closer than this fraction of the mean
   // rest edge length (welding then moves no vertex by more than half of that).

@@ -72,6 +72,10 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
                        "At the start the arms are turned this far away from the torso about "
                        "their shoulders (degrees), and back as the body grows, so that the "
                        "torso's side seams find room under them.");
+    prm.declare_bool("Shorten torso", true,
+                     "The torso also shrinks along its axis about its middle, the limbs moving "
+                     "with their roots, so that the shoulders start lower than the shoulder "
+                     "seams; false: each part shrinks across its own axis only.");
     declare_dressing_frames(prm);
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
@@ -87,6 +91,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     }
     const double blend_m = prm.get_double("Skeleton blend");
     const double arm_raise_rad = prm.get_double("Arm raise") * M_PI / 180.0;
+    const bool shorten_torso = prm.get_bool("Shorten torso");
     DressingSettings settings;
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
@@ -105,6 +110,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       dressing.skeleton = skeleton_bones(body);
       dressing.skeleton_blend_m = blend_m;
       dressing.skeleton_arm_raise_rad = arm_raise_rad;
+      dressing.skeleton_shortens_torso = shorten_torso;
       std::vector<Vec3> start;
       try {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);
