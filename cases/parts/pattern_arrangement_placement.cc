@@ -76,6 +76,9 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
                      "The torso also shrinks along its axis about its middle, the limbs moving "
                      "with their roots, so that the shoulders start lower than the shoulder "
                      "seams; false: each part shrinks across its own axis only.");
+    prm.declare_double("Damping", 0, 0, ParameterTree::unbounded,
+                       "Mass-proportional damping while the seams close (1/s); 0: the "
+                       "automatic one, critical for the garment's slowest membrane wave.");
     declare_dressing_frames(prm);
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
@@ -95,6 +98,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     DressingSettings settings;
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
+    settings.mass_spring.damping_per_s = prm.get_double("Damping");
     settings.progress = &std::cout;
     return [=](const Scenario& scenario) {
       const BodyMeasurements body = measured(surface_of(scenario.body->body()), "case's body");
