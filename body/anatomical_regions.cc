@@ -57,12 +57,9 @@ RegionPiece leg_tube(const PartFrame& leg, const Vec3& at, double low, double hi
 }  // namespace
 
 const std::vector<std::string>& anatomical_region_names() {
-  static const std::vector<std::string> names = {"bust",       "under-bust band",
-                                                 "waist band", "hip band",
-                                                 "scapulae",   "B",
-                                                 "C",          "G",
-                                                 "knee",       "calf",
-                                                 "thigh"};
+  static const std::vector<std::string> names = {
+      "bust", "under-bust band", "waist band", "hip band", "scapulae", "B", "C", "G", "knee",
+      "calf", "thigh",           "upper arm"};
   return names;
 }
 
@@ -71,6 +68,7 @@ double default_region_width_m(const std::string& name) {
   if (name == "under-bust band" || name == "knee") return 0.04;
   if (name == "scapulae") return 0.09;
   if (name == "B" || name == "C" || name == "G") return 0.02;
+  if (name == "upper arm") return 0.08;
   return 0.0;  // calf and thigh: from landmark to landmark
 }
 
@@ -80,6 +78,26 @@ std::vector<RegionPiece> anatomical_region(const BodyMeasurements& body, const A
     throw BodyMeasureError("no named region '" + r.name + "'");
   const double width = r.width_m > 0 ? r.width_m : default_region_width_m(r.name);
   std::vector<RegionPiece> pieces;
+  if (r.name == "upper arm") {
+    // A band round each arm's axis centred on its upper-arm girth line (its largest girth from
+    // 3 to 15 cm beyond the armpit), as wide as the section there with a margin.
+    if (r.facing != 0)
+      throw BodyMeasureError("region 'upper arm' goes round the arm: no front or back");
+    for (int side = 0; side < 2; ++side) {
+      if (r.side >= 0 && r.side != side) continue;
+      const std::string s = side == 0 ? " left" : " right";
+      const BodyGirth& line = body.girth("upper arm" + s);
+      RegionPiece p;
+      p.kind = RegionPiece::Kind::tube;
+      p.point_m = line.centre_m;
+      p.axis = body.part("arm" + s).along;
+      p.low_m = -0.5 * width;
+      p.high_m = 0.5 * width;
+      p.radius_m = 0.8 * line.girth_m / pi + 0.02;
+      pieces.push_back(p);
+    }
+    return pieces;
+  }
   if (is_leg_region(r.name)) {
     if (r.facing != 0)
       throw BodyMeasureError("region '" + r.name + "' goes round the leg: no front or back");

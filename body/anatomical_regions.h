@@ -24,12 +24,12 @@ struct RegionPiece {
 
 struct AnatomyRequest {
   std::string name;      // one of anatomical_region_names()
-  int side = -1;         // legs: -1 both, 0 left, 1 right
+  int side = -1;         // legs and arms: -1 both, 0 left, 1 right
   int facing = 0;        // torso bands: 0 all round, 1 the front, -1 the back
   double width_m = 0.0;  // 0: the name's default
 };
 
-// bust, under-bust band, waist band, hip band, scapulae, B, C, G, knee, calf, thigh.
+// bust, under-bust band, waist band, hip band, scapulae, B, C, G, knee, calf, thigh, upper arm.
 const std::vector<std::string>& anatomical_region_names();
 // The default width of each (m), as docs/bodies.md ("Named regions") lists them.
 double default_region_width_m(const std::string& name);

@@ -1,18 +1,29 @@
 #include "contact/scaled_body.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace tightfit {
 
 ScaledBody::ScaledBody(const RigidBody& body, const Vec3& centre_m)
-    : body_(body), centre_m_(centre_m) {}
+    : body_(body), centre_m_(centre_m) {
+  find_reach();
+}
 
 ScaledBody::ScaledBody(const RigidBody& body, const Vec3& centre_m, const Vec3& axis)
     : body_(body), centre_m_(centre_m) {
   if (!(axis.norm() > 0)) throw std::invalid_argument("a scaling axis must not be zero");
   const Vec3 a = axis.normalized();
   along_ = a * a.transpose();
+  find_reach();
+}
+
+void ScaledBody::find_reach() {
+  for (const Vec3& p : body_.display_mesh().vertices_m) {
+    const Vec3 d = p - centre_m_;
+    reach_m_ = std::max(reach_m_, Vec3(d - along_ * d).norm());
+  }
 }
 
 void ScaledBody::set_scale(double scale) {

@@ -10,11 +10,11 @@
 // (massspring/dressing.h) starts it shrunk inside the open garment and grows it back to s = 1.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "contact/shrinking_body.h"
 
 namespace tightfit {
 
-class ScaledBody final : public RigidBody {
+class ScaledBody final : public ShrinkingBody {
  public:
   // About the point `centre_m`; `body` must outlive this object. Scale 1 until set_scale.
   ScaledBody(const RigidBody& body, const Vec3& centre_m);
@@ -22,8 +22,10 @@ class ScaledBody final : public RigidBody {
   ScaledBody(const RigidBody& body, const Vec3& centre_m, const Vec3& axis);
 
   // Throws std::invalid_argument unless the scale is positive.
-  void set_scale(double scale);
-  double scale() const { return scale_; }
+  void set_scale(double scale) override;
+  double scale() const override { return scale_; }
+  // The farthest vertex of the body's display mesh from the centre (or the axis), m.
+  double reach_m() const override { return reach_m_; }
 
   std::string name() const override { return body_.name() + " (scaled)"; }
   SurfacePoint query(const Vec3& x) const override;
@@ -43,6 +45,8 @@ class ScaledBody final : public RigidBody {
   Vec3 centre_m_;
   Mat3 along_ = Mat3::Zero();  // P
   double scale_ = 1.0;
+  double reach_m_ = 0.0;
+  void find_reach();
 };
 
 }  // namespace tightfit

@@ -9,6 +9,7 @@
 #include "core/types.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,15 @@ struct Panel {
   // Where the panel lies in the common 2D layout plane (the FE reference domain), metres:
   // layout position = rest position + offset.
   Vec2 layout_offset_m = Vec2::Zero();
+  // Where the panel lies in 3D as its pattern file arranges it round the file's own body
+  // (GarmentCode's panels; docs/dressing.md "Arrangement from the pattern file"): the rest
+  // position (x, y) goes to rotation (x, y, 0) + translation, in the file's frame (its up axis,
+  // metres). Absent when the file does not say.
+  struct Arrangement {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 translation_m = Vec3::Zero();
+  };
+  std::optional<Arrangement> arrangement;
 };
 
 // Sews edge `edge_a` of panel `panel_a` to edge `edge_b` of panel `panel_b`, vertex by vertex

@@ -4,6 +4,7 @@
 
 #include "contact/rigid_body.h"
 #include "contact/scaled_body.h"
+#include "contact/skeleton_shrunk_body.h"
 #include "core/interruption.h"
 #include "massspring/open_seam_garment.h"
 #include "massspring/unwelded_panels.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -38,6 +40,29 @@ std::string where(const Vec3& x) {
 
 double ramp(int frame, int frames) {
   return frames <= 0 ? 1.0 : std::min(1.0, double(frame) / frames);
+}
+
+// The body shrunk as the settings say: about its skeleton, an axis or a point.
+std::unique_ptr<ShrinkingBody> shrinking_body(const RigidBody& whole,
+                                              const DressingSettings& settings) {
+  if (!settings.skeleton.empty()) {
+    const DisplayMesh mesh = whole.display_mesh();
+    TriangleSurface surface;
+    surface.vertices_m = mesh.vertices_m;
+    surface.triangles = mesh.triangles;
+    Vec3 up = Vec3::UnitZ();
+    for (const SkeletonBone& bone : settings.skeleton)
+      if (bone.name == "torso") up = (bone.end_m - bone.root_m).normalized();
+    const double per_unit = settings.start_scale < 1.0
+                                ? settings.skeleton_arm_raise_rad / (1.0 - settings.start_scale)
+                                : 0.0;
+    return std::make_unique<SkeletonShrunkBody>(std::move(surface), settings.skeleton,
+                                                settings.skeleton_blend_m, 0.005, per_unit, up,
+                                                settings.skeleton_shortens_torso);
+  }
+  if (settings.scale_axis)
+    return std::make_unique<ScaledBody>(whole, settings.centre_m, *settings.scale_axis);
+  return std::make_unique<ScaledBody>(whole, settings.centre_m);
 }
 
 }  // namespace
@@ -77,9 +102,8 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     throw std::invalid_argument("dressing: " + std::to_string(start_m.size()) +
                                 " start positions for " +
                                 std::to_string(welded.n_unwelded_vertices()) + " panel vertices");
-  ScaledBody body = settings.scale_axis
-                        ? ScaledBody(*problem.body, settings.centre_m, *settings.scale_axis)
-                        : ScaledBody(*problem.body, settings.centre_m);
+  const std::unique_ptr<ShrinkingBody> shrinking = shrinking_body(*problem.body, settings);
+  ShrinkingBody& body = *shrinking;
   body.set_scale(settings.start_scale);
   open.set_body(&body);
 
@@ -116,23 +140,14 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     return SolverError(reason, message.str());
   };
 
-  // How far the body's surface can move as its scale changes by ds: ds times the farthest
-  // distance of its surface from the centre (or the axis).
-  double reach_m = 0.0;
-  {
-    const DisplayMesh surface = problem.body->display_mesh();
-    for (const Vec3& p : surface.vertices_m) {
-      Vec3 d = p - settings.centre_m;
-      if (settings.scale_axis)
-        d -= d.dot(settings.scale_axis->normalized()) * settings.scale_axis->normalized();
-      reach_m = std::max(reach_m, d.norm());
-    }
-  }
+  // How far the body's surface can move as its scale changes by ds: ds times its reach.
+  const double reach_m = body.reach_m();
   for (;;) {
     const double scale = settings.start_scale +
                          (1.0 - settings.start_scale) * ramp(result.frames, settings.growth_frames);
-    open.body_moved(std::abs(scale - body.scale()) * reach_m * 1.01);
+    const double scale_before = body.scale();
     body.set_scale(scale);
+    open.body_moved(std::abs(body.scale() - scale_before) * reach_m * 1.01);
     open.set_clearance_factor(scale);
     open.set_seam_fraction(ramp(result.frames + 1, settings.seam_ramp_frames));
     // The stiffness bounds move with the shape (a stiffening law's tangent); cheap at this rate.

@@ -8,6 +8,7 @@
 // FlatPanelStart) for any body and any pattern.
 #pragma once
 
+#include "contact/skeleton_shrink.h"
 #include "core/backend.h"
 #include "massspring/massspring_parameters.h"
 
@@ -22,8 +23,17 @@ struct DressingSettings {
   Vec3 centre_m = Vec3::Zero();  // the point the body is scaled about, or a point on the axis
   // About an axis (lengths along it kept: heights stay, the body thins) when given.
   std::optional<Vec3> scale_axis;
-  double start_scale = 0.7;    // the body's scale at the first frame (0, 1]
-  int growth_frames = 2000;    // frames over which the scale rises linearly to 1
+  // If given, the body shrinks about these bones instead, each part about its own axis
+  // (contact/skeleton_shrink.h; the body's mesh is its display mesh); centre and axis unused.
+  std::vector<SkeletonBone> skeleton;
+  double skeleton_blend_m = 0.03;  // SkeletonShrink's blend width, m
+  // The arms turned away from the torso by this angle at the start scale, and back as the body
+  // grows (SkeletonShrink::set_arm_raise), radians; the torso's direction along skeleton[0]'s
+  // bone named "torso" (z when there is none).
+  double skeleton_arm_raise_rad = 0.0;
+  bool skeleton_shortens_torso = false;  // SkeletonShrink::set_torso_shortening
+  double start_scale = 0.7;              // the body's scale at the first frame (0, 1]
+  int growth_frames = 2000;              // frames over which the scale rises linearly to 1
   int seam_ramp_frames = 500;  // frames over which the seam stiffness rises linearly to full
   // The seams are closed when every seam vertex pair is closer than this fraction of the mean
   // rest edge length (welding then moves no vertex by more than half of that).

@@ -63,6 +63,7 @@ PanelOutline mirror_image(const PanelOutline& piece) {
   PanelOutline m = piece;
   m.name = piece.name + " mirrored";
   m.mirrored_copy = false;
+  m.placement.reset();
   m.grain_angle_rad = -piece.grain_angle_rad;
   m.edges.clear();
   for (auto e = piece.edges.rbegin(); e != piece.edges.rend(); ++e)
@@ -79,6 +80,8 @@ Pattern cut_pieces(const Pattern& pattern) {
   for (const PanelOutline& piece : pattern.panels) {
     PanelOutline whole = piece.fold_edge.empty() ? piece : unfolded(piece);
     whole.mirrored_copy = false;
+    // A file's 3D placement holds for the piece as drawn, not unfolded or mirrored.
+    if (!piece.fold_edge.empty()) whole.placement.reset();
     cut.panels.push_back(whole);
     if (piece.mirrored_copy) cut.panels.push_back(mirror_image(whole));
   }

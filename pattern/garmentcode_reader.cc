@@ -186,6 +186,7 @@ PanelOutline read_panel(const std::string& name, const Json& panel, double scale
     for (const Vec2& v : vertices) mean += v / static_cast<double>(vertices.size());
     placement.translation_m += Vec3(mean.x(), mean.y(), 0.0);
   }
+  placement.outline_mirrored = mirror;
   outline.placement = placement;
   return outline;
 }

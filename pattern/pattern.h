@@ -30,6 +30,9 @@ struct Edge {
 struct PanelPlacement3D {
   Vec3 translation_m = Vec3::Zero();
   Vec3 rotation_xyz_deg = Vec3::Zero();  // Euler angles about x, then y, then z
+  // The file's outline ran clockwise and was mirrored (x -> -x) to run counter-clockwise: the
+  // placement applies to the file's own x.
+  bool outline_mirrored = false;
 };
 
 struct PanelOutline {

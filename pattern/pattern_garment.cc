@@ -144,12 +144,49 @@ std::vector<PolygonMesh> conforming_meshes(EdgeDivision& division,
 }
 
 // Negative ease: pattern coordinates scaled along the panel's weft and warp.
-void apply_ease(Panel& panel, double weft, double warp) {
-  if (weft == 1.0 && warp == 1.0) return;
+Mat2 ease_map(const Panel& panel, double weft, double warp) {
   const Eigen::Rotation2Dd to_grain(-panel.grain_angle_rad);
   const Mat2 R = to_grain.toRotationMatrix();
-  const Mat2 map = R.transpose() * Vec2(weft, warp).asDiagonal() * R;
+  return R.transpose() * Vec2(weft, warp).asDiagonal() * R;
+}
+
+void apply_ease(Panel& panel, double weft, double warp) {
+  if (weft == 1.0 && warp == 1.0) return;
+  const Mat2 map = ease_map(panel, weft, warp);
   for (Vec2& x : panel.rest_positions_m) x = map * x;
+}
+
+Vec2 box_centre(const std::vector<Vec2>& points) {
+  Vec2 low = points.front(), high = low;
+  for (const Vec2& x : points) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+  }
+  return 0.5 * (low + high);
+}
+
+// The file's 3D placement of the panel's outline (GarmentCode: p = R (x, y, 0) + t, R from the
+// XYZ Euler angles as Rz Ry Rx, Maya's convention, which GarmentCode's own reader uses) carried
+// to the panel's rest coordinates after the ease: the rest mesh lies where the outline does
+// up to a shift (a grid panel starts at its corner), read off the two boxes' centres, and the
+// eased panel keeps its centre where the outline's was.
+Panel::Arrangement arrangement(const PanelOutline& outline, const Vec2& rest_centre_before_ease,
+                               const Mat2& ease) {
+  const PanelPlacement3D& placement = *outline.placement;
+  const Vec3 a = placement.rotation_xyz_deg * (M_PI / 180.0);
+  const Mat3 R = (Eigen::AngleAxisd(a.z(), Vec3::UnitZ()) *
+                  Eigen::AngleAxisd(a.y(), Vec3::UnitY()) * Eigen::AngleAxisd(a.x(), Vec3::UnitX()))
+                     .toRotationMatrix();
+  const Mat3 mirror = Vec3(placement.outline_mirrored ? -1.0 : 1.0, 1.0, 1.0).asDiagonal();
+  std::vector<Vec2> outline_points;
+  for (const Edge& edge : outline.edges)
+    for (const Segment& segment : edge.segments)
+      for (int k = 0; k < 16; ++k) outline_points.push_back(point_at(segment, k / 16.0));
+  const Vec2 shift = box_centre(outline_points) - ease * rest_centre_before_ease;
+  Panel::Arrangement placed;
+  placed.rotation = R * mirror;
+  placed.translation_m = placement.translation_m + placed.rotation * Vec3(shift.x(), shift.y(), 0);
+  return placed;
 }
 
 // A seam side as a named vertex list of its panel, and whether the walk runs against it.
@@ -247,7 +284,11 @@ Garment pattern_garment(const Pattern& pattern, const PatternMeshOptions& option
     Panel panel = grids[p]
                       ? grid_panel(cut.panels[p], *grids[p], *options.rectangle_grid)
                       : delaunay_panel(cut.panels[p], division, static_cast<int>(p), meshes[p]);
+    const Vec2 rest_centre = box_centre(panel.rest_positions_m);
     apply_ease(panel, pattern.ease_weft, pattern.ease_warp);
+    if (cut.panels[p].placement)
+      panel.arrangement = arrangement(cut.panels[p], rest_centre,
+                                      ease_map(panel, pattern.ease_weft, pattern.ease_warp));
     garment.panels.push_back(std::move(panel));
   }
   for (std::size_t k = 0; k < division.seams().size(); ++k) {

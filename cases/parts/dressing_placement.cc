@@ -115,6 +115,23 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
 
 }  // namespace
 
+void declare_dressing_frames(ParameterTree& prm) {
+  prm.declare_integer("Growth frames", 2000, 0, 100000000,
+                      "RK4 frames over which the body grows linearly to its own size.");
+  prm.declare_integer("Seam ramp frames", 500, 0, 100000000,
+                      "RK4 frames over which the seam springs' stiffness rises linearly from "
+                      "zero to full.");
+  prm.declare_integer("Maximum frames", 40000, 1, 100000000,
+                      "Frames the seams have to close in; beyond them the dressing fails "
+                      "naming the seam with the widest gap.");
+}
+
+void read_dressing_frames(ParameterTree& prm, DressingSettings& settings) {
+  settings.growth_frames = prm.get_integer("Growth frames");
+  settings.seam_ramp_frames = prm.get_integer("Seam ramp frames");
+  settings.maximum_frames = prm.get_integer("Maximum frames");
+}
+
 PartEntry<PlacementMaker> dressing_placement_entry() {
   PartEntry<PlacementMaker> e;
   e.name = "dressing";
@@ -145,20 +162,13 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     prm.declare_double("Start scale", 0.7, 0.05, 1,
                        "The body's scale about Centre or the axis at the start of the dressing "
                        "(-).");
-    prm.declare_integer("Growth frames", 2000, 0, 100000000,
-                        "RK4 frames over which the body grows linearly to its own size.");
-    prm.declare_integer("Seam ramp frames", 500, 0, 100000000,
-                        "RK4 frames over which the seam springs' stiffness rises linearly from "
-                        "zero to full.");
+    declare_dressing_frames(prm);
     prm.declare_double("Seam stiffness factor", 20, 0, ParameterTree::unbounded,
                        "Each zero-rest-length seam spring's stiffness over the law's stiffness "
                        "scale (-).");
     prm.declare_double("Closed gap", 0.05, 0, ParameterTree::unbounded,
                        "The seams are closed when every seam vertex pair is closer than this "
                        "fraction of the mean rest edge length (-); they are then welded.");
-    prm.declare_integer("Maximum frames", 40000, 1, 100000000,
-                        "Frames the seams have to close in; beyond them the dressing fails "
-                        "naming the seam with the widest gap.");
     prm.declare_double("Coarse edge length", 0, 0, ParameterTree::unbounded,
                        "Above 0: dress the garment meshed at this edge length (m) instead, and "
                        "carry its welded state to the case's mesh in pattern space (a pattern "
@@ -193,11 +203,9 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     settings.centre_m = wrap.centre_m;
     if (prm.get("Scale about") == "axis") settings.scale_axis = wrap.axis;
     settings.start_scale = prm.get_double("Start scale");
-    settings.growth_frames = prm.get_integer("Growth frames");
-    settings.seam_ramp_frames = prm.get_integer("Seam ramp frames");
+    read_dressing_frames(prm, settings);
     settings.mass_spring.seam_stiffness_factor = prm.get_double("Seam stiffness factor");
     settings.closed_fraction = prm.get_double("Closed gap");
-    settings.maximum_frames = prm.get_integer("Maximum frames");
     settings.progress = &std::cout;
     const double coarse_m = prm.get_double("Coarse edge length");
     CoarseSettle settle;

@@ -5,6 +5,7 @@
 
 #include "cases/case_parameters.h"
 #include "cases/part_registry.h"
+#include "massspring/dressing.h"
 
 namespace tightfit {
 
@@ -26,7 +27,13 @@ PartEntry<PlacementMaker> tube_round_cylinder_placement_entry();
 PartEntry<PlacementMaker> flat_on_plane_placement_entry();
 PartEntry<PlacementMaker> tube_round_axis_placement_entry();
 PartEntry<PlacementMaker> dressing_placement_entry();
+PartEntry<PlacementMaker> pattern_arrangement_placement_entry();
 PartEntry<PlacementMaker> from_file_placement_entry();
+
+// The dressing stage's frame counts (massspring/dressing.h), shared by the placements that
+// dress: Growth frames, Seam ramp frames, Maximum frames.
+void declare_dressing_frames(ParameterTree& prm);
+void read_dressing_frames(ParameterTree& prm, DressingSettings& settings);
 
 // Measurements (Measurements/List).
 PartEntry<MeasurementMaker> cylinder_theory_measurement_entry();
