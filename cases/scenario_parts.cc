@@ -39,6 +39,7 @@ const PartRegistry<PlacementMaker>& placement_kinds() {
     r.add(flat_on_plane_placement_entry());
     r.add(tube_round_axis_placement_entry());
     r.add(dressing_placement_entry());
+    r.add(arrangement_placement_entry());
     r.add(from_file_placement_entry());
     return r;
   }();

@@ -26,6 +26,7 @@ PartEntry<PlacementMaker> tube_round_cylinder_placement_entry();
 PartEntry<PlacementMaker> flat_on_plane_placement_entry();
 PartEntry<PlacementMaker> tube_round_axis_placement_entry();
 PartEntry<PlacementMaker> dressing_placement_entry();
+PartEntry<PlacementMaker> arrangement_placement_entry();
 PartEntry<PlacementMaker> from_file_placement_entry();
 
 // Measurements (Measurements/List).
