@@ -17,7 +17,8 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
                                       const std::string& section) {
   if (scenario.parameters.garment.kind != "pattern file")
     throw std::invalid_argument(
-        section + "/Coarse edge length: only a garment cut from a pattern "
+        section +
+        "/Coarse edge length: only a garment cut from a pattern "
         "(Garment/Kind = pattern file) is meshed at another edge length, not Garment/Kind = " +
         scenario.parameters.garment.kind);
   CaseParameters coarse = scenario.parameters;
@@ -65,7 +66,6 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
   std::fflush(stdout);
   return x;
 }
-
 
 void print_dressing(const DressingResult& dressed) {
   if (dressed.vertices_pushed_out > 0)

@@ -26,7 +26,8 @@ std::string lower(std::string text) {
 }
 
 bool is_torso(const std::string& part) {
-  return part == "torso" || std::find(torso_parts.begin(), torso_parts.end(), part) != torso_parts.end();
+  return part == "torso" ||
+         std::find(torso_parts.begin(), torso_parts.end(), part) != torso_parts.end();
 }
 
 // Round the axis from the front towards the body's left (contact/panel_wrap.h's angles).
@@ -81,6 +82,18 @@ double side_seam_top_y(const Garment& garment, int p, const std::vector<std::str
   return top;
 }
 
+// The torso's girth lines the body has, from the bust down.
+std::vector<const BodyGirth*> torso_girths(const BodyMeasurements& body) {
+  std::vector<const BodyGirth*> found;
+  for (const char* name : {"bust", "under-bust", "waist", "hips"}) {
+    try {
+      found.push_back(&body.girth(name));
+    } catch (const std::out_of_range&) {
+    }
+  }
+  return found;
+}
+
 double level_m(const PartFrame& torso, const Vec3& point_m) {
   return (point_m - torso.origin_m).dot(torso.along);
 }
@@ -88,9 +101,9 @@ double level_m(const PartFrame& torso, const Vec3& point_m) {
 }  // namespace
 
 const std::vector<std::string>& arrangement_body_parts() {
-  static const std::vector<std::string> parts = {
-      "torso front", "torso back", "torso left", "torso right",
-      "arm left",    "arm right",  "leg left",   "leg right"};
+  static const std::vector<std::string> parts = {"torso front", "torso back", "torso left",
+                                                 "torso right", "arm left",   "arm right",
+                                                 "leg left",    "leg right"};
   return parts;
 }
 
@@ -146,7 +159,8 @@ ArrangementPlan plan_arrangement(const Garment& garment, const BodyMeasurements&
     any = any || !plan.panel_parts[p].empty();
   }
   for (std::size_t p = 0; p < n; ++p) {
-    if (!any) plan.panel_parts[p] = "torso";  // evenly round, below
+    if (!any)
+      plan.panel_parts[p] = "torso";  // evenly round, below
     else if (plan.panel_parts[p].empty())
       throw std::invalid_argument("Body parts: panel '" + garment.panels[p].name +
                                   "' names no body part; give it one (PANEL: PART)");
@@ -164,13 +178,7 @@ ArrangementPlan plan_arrangement(const Garment& garment, const BodyMeasurements&
   wrap.front = torso.front;
   // The torso's extent across its axis at its girth lines, and its largest girth.
   double side_m = 0.0, front_m = 0.0, girth_m = 0.0;
-  for (const char* name : {"bust", "under-bust", "waist", "hips"}) {
-    const BodyGirth* g = nullptr;
-    try {
-      g = &body.girth(name);
-    } catch (const std::out_of_range&) {
-      continue;
-    }
+  for (const BodyGirth* g : torso_girths(body)) {
     girth_m = std::max(girth_m, g->girth_m);
     for (const Vec3& q : g->hull_m) {
       const Vec3 d = q - torso.origin_m;
@@ -183,8 +191,8 @@ ArrangementPlan plan_arrangement(const Garment& garment, const BodyMeasurements&
   const double clearance_m = options.clearance * girth_m / (2 * M_PI);
   wrap.semi_axis_side_m = options.start_scale * side_m + clearance_m;
   wrap.semi_axis_front_m = options.start_scale * front_m + clearance_m;
-  const double radius_m = ellipse_perimeter_m(wrap.semi_axis_side_m, wrap.semi_axis_front_m) /
-                          (2 * M_PI);
+  const double radius_m =
+      ellipse_perimeter_m(wrap.semi_axis_side_m, wrap.semi_axis_front_m) / (2 * M_PI);
 
   // Round the axis: the panels of one side of the torso side by side, centred on that side.
   wrap.panel_angles_rad.assign(n, 0.0);
@@ -291,16 +299,10 @@ std::vector<EaseAtLine> ease_at_girth_lines(const Garment& garment, const Arrang
                                             const BodyMeasurements& body) {
   std::vector<EaseAtLine> lines;
   const PartFrame& torso = body.part("torso");
-  for (const char* name : {"bust", "under-bust", "waist", "hips"}) {
-    const BodyGirth* g = nullptr;
-    try {
-      g = &body.girth(name);
-    } catch (const std::out_of_range&) {
-      continue;
-    }
+  for (const BodyGirth* g : torso_girths(body)) {
     const double level = level_m(torso, g->centre_m);
     EaseAtLine at;
-    at.line = name;
+    at.line = g->name;
     at.girth_m = g->girth_m;
     bool reached = true;
     for (std::size_t p = 0; p < garment.panels.size(); ++p) {

@@ -63,8 +63,8 @@ double panel_width_at_m(const Panel& panel, double y_m);
 
 // The ease against the body asked for at one girth line: "bust: -0.15".
 struct BodyEase {
-  std::string line;    // a girth of body_measurements: bust, under-bust, waist, hips
-  double ease = 0.0;   // garment round the body over the body's girth, less one
+  std::string line;   // a girth of body_measurements: bust, under-bust, waist, hips
+  double ease = 0.0;  // garment round the body over the body's girth, less one
 };
 BodyEase parse_body_ease(const std::string& text);  // throws std::invalid_argument
 

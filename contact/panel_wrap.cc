@@ -27,9 +27,9 @@ std::vector<Vec3> wrap_panels_round_axis(const Garment& garment, const Simulatio
         "one angle per panel is needed: " + std::to_string(wrap.panel_angles_rad.size()) + " for " +
         std::to_string(garment.panels.size()) + " panels");
   if (!wrap.panel_hem_heights_m.empty() && wrap.panel_hem_heights_m.size() != garment.panels.size())
-    throw std::invalid_argument("one hem height per panel is needed: " +
-                                std::to_string(wrap.panel_hem_heights_m.size()) + " for " +
-                                std::to_string(garment.panels.size()) + " panels");
+    throw std::invalid_argument(
+        "one hem height per panel is needed: " + std::to_string(wrap.panel_hem_heights_m.size()) +
+        " for " + std::to_string(garment.panels.size()) + " panels");
   const double radius = ellipse_perimeter_m(a, b) / (2.0 * M_PI);
 
   std::vector<Vec3> x(mesh.n_unwelded_vertices());
@@ -47,8 +47,7 @@ std::vector<Vec3> wrap_panels_round_axis(const Garment& garment, const Simulatio
         wrap.panel_hem_heights_m.empty() ? wrap.hem_height_m : wrap.panel_hem_heights_m[p];
     for (std::size_t i = 0; i < rest.size(); ++i) {
       const double phi = wrap.panel_angles_rad[p] + (rest[i].x() - x_middle) / radius;
-      x[mesh.panel_vertex_offset[p] + i] = wrap.centre_m +
-                                           (hem_m + rest[i].y() - y_min) * axis +
+      x[mesh.panel_vertex_offset[p] + i] = wrap.centre_m + (hem_m + rest[i].y() - y_min) * axis +
                                            b * std::cos(phi) * f + a * std::sin(phi) * l;
     }
   }

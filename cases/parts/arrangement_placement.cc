@@ -37,8 +37,8 @@ BodyMeasurements measured_body(const Scenario& scenario) {
   try {
     return measure_body(surface);
   } catch (const BodyMeasureError& e) {
-    throw BodyMeasureError(std::string(section) + ": the arrangement needs the body's landmarks: " +
-                           e.what());
+    throw BodyMeasureError(std::string(section) +
+                           ": the arrangement needs the body's landmarks: " + e.what());
   }
 }
 
@@ -74,8 +74,10 @@ PlacementMaker arrange(const ArrangementSettings& a, std::optional<double> fixed
     try {
       plan = plan_arrangement(s.garment, body, a.options);
       double factor = 1.0;
-      if (fixed_scale) factor = *fixed_scale;
-      else if (a.ease) factor = round_body_scale_for(*a.ease, s.garment, plan, body);
+      if (fixed_scale)
+        factor = *fixed_scale;
+      else if (a.ease)
+        factor = round_body_scale_for(*a.ease, s.garment, plan, body);
       if (factor != 1.0) {
         refit_round_body(s, factor);
         plan = plan_arrangement(s.garment, body, a.options);
@@ -89,8 +91,7 @@ PlacementMaker arrange(const ArrangementSettings& a, std::optional<double> fixed
       if (a.coarse_m > 0 && !fixed_scale) {
         ArrangementSettings coarse = a;
         coarse.coarse_m = 0;
-        return dressed_from_coarse(s, a.coarse_m, CoarseSettle{}, arrange(coarse, factor),
-                                   section);
+        return dressed_from_coarse(s, a.coarse_m, CoarseSettle{}, arrange(coarse, factor), section);
       }
     } catch (const BodyMeasureError&) {
       throw;
@@ -142,6 +143,12 @@ PartEntry<PlacementMaker> arrangement_placement_entry() {
     prm.declare_double("Side seam below armpit", 0.03, -1, 1,
                        "The top of each panel's side seam (its most upright seam to another "
                        "torso panel) this far below the lower armpit along the torso's axis (m).");
+    prm.declare_integer("Growth frames", 2000, 0, 100000000,
+                        "RK4 frames over which the body grows linearly to its own size "
+                        "(Placement/Dressing/Growth frames).");
+    prm.declare_integer("Seam ramp frames", 500, 0, 100000000,
+                        "RK4 frames over which the seam springs' stiffness rises linearly from "
+                        "zero to full.");
     prm.declare_double("Coarse edge length", 0, 0, ParameterTree::unbounded,
                        "Above 0: dress the garment meshed at this edge length (m) and carry its "
                        "welded state to the case's mesh in pattern space; 0: dress the case's "
@@ -157,6 +164,8 @@ PartEntry<PlacementMaker> arrangement_placement_entry() {
     a.options.side_seam_below_armpit_m = prm.get_double("Side seam below armpit");
     a.coarse_m = prm.get_double("Coarse edge length");
     a.dressing.start_scale = a.options.start_scale;
+    a.dressing.growth_frames = prm.get_integer("Growth frames");
+    a.dressing.seam_ramp_frames = prm.get_integer("Seam ramp frames");
     a.dressing.progress = &std::cout;
     return arrange(a, std::nullopt);
   };

@@ -3,9 +3,9 @@
 // (massspring/dressing.h): seam springs close the seams while the body grows from a shrunk
 // start to its shape; the welded garment is the start of the load steps, on either backend
 // (docs/dressing.md).
+#include "cases/coarse_dressing.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "cases/coarse_dressing.h"
 #include "contact/panel_wrap.h"
 #include "contact/surface_return.h"
 #include "core/mesh_transfer.h"
