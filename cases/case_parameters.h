@@ -33,8 +33,10 @@ class DeclaredParameters;
 // study builds one scenario per mesh level).
 using GarmentMaker = std::function<Garment(const std::string& name, const MeshSpacing& spacing)>;
 using BodyMaker = std::function<std::unique_ptr<ScenarioBody>(const Garment& garment)>;
-// The welded start positions of the garment on the scenario's body, m.
-using PlacementMaker = std::function<std::vector<Vec3>(const Scenario& scenario)>;
+// The welded start positions of the garment on the scenario's body, m. A placement may fit the
+// garment to the body first (Placement/Kind = arrangement's ease against the body: its
+// pattern scaled round the body, the mesh welded again).
+using PlacementMaker = std::function<std::vector<Vec3>(Scenario& scenario)>;
 using MeasurementMaker = std::function<std::unique_ptr<Measurement>()>;
 
 struct GarmentSettings {

@@ -40,6 +40,7 @@ const PartRegistry<PlacementMaker>& placement_kinds() {
     r.add(tube_round_axis_placement_entry());
     r.add(dressing_placement_entry());
     r.add(pattern_arrangement_placement_entry());
+    r.add(arrangement_placement_entry());
     r.add(from_file_placement_entry());
     return r;
   }();

@@ -6,6 +6,11 @@
 
 namespace tightfit {
 
+double ellipse_perimeter_m(double a_m, double b_m) {
+  const double h = (a_m - b_m) * (a_m - b_m) / ((a_m + b_m) * (a_m + b_m));
+  return M_PI * (a_m + b_m) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h)));
+}
+
 std::vector<Vec3> wrap_panels_round_axis(const Garment& garment, const SimulationMesh& mesh,
                                          const PanelWrap& wrap) {
   if (!(wrap.axis.norm() > 0)) throw std::invalid_argument("the axis must not be zero");
@@ -21,10 +26,11 @@ std::vector<Vec3> wrap_panels_round_axis(const Garment& garment, const Simulatio
     throw std::invalid_argument(
         "one angle per panel is needed: " + std::to_string(wrap.panel_angles_rad.size()) + " for " +
         std::to_string(garment.panels.size()) + " panels");
-  // Ramanujan's perimeter of the ellipse (exact for a circle).
-  const double h = (a - b) * (a - b) / ((a + b) * (a + b));
-  const double perimeter = M_PI * (a + b) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h)));
-  const double radius = perimeter / (2.0 * M_PI);
+  if (!wrap.panel_hem_heights_m.empty() && wrap.panel_hem_heights_m.size() != garment.panels.size())
+    throw std::invalid_argument(
+        "one hem height per panel is needed: " + std::to_string(wrap.panel_hem_heights_m.size()) +
+        " for " + std::to_string(garment.panels.size()) + " panels");
+  const double radius = ellipse_perimeter_m(a, b) / (2.0 * M_PI);
 
   std::vector<Vec3> x(mesh.n_unwelded_vertices());
   for (std::size_t p = 0; p < garment.panels.size(); ++p) {
@@ -37,10 +43,11 @@ std::vector<Vec3> wrap_panels_round_axis(const Garment& garment, const Simulatio
       y_min = std::min(y_min, r.y());
     }
     const double x_middle = 0.5 * (x_min + x_max);
+    const double hem_m =
+        wrap.panel_hem_heights_m.empty() ? wrap.hem_height_m : wrap.panel_hem_heights_m[p];
     for (std::size_t i = 0; i < rest.size(); ++i) {
       const double phi = wrap.panel_angles_rad[p] + (rest[i].x() - x_middle) / radius;
-      x[mesh.panel_vertex_offset[p] + i] = wrap.centre_m +
-                                           (wrap.hem_height_m + rest[i].y() - y_min) * axis +
+      x[mesh.panel_vertex_offset[p] + i] = wrap.centre_m + (hem_m + rest[i].y() - y_min) * axis +
                                            b * std::cos(phi) * f + a * std::sin(phi) * l;
     }
   }

@@ -24,10 +24,16 @@ struct PanelWrap {
   double semi_axis_front_m = 0.15;
   double hem_height_m = 0.0;  // along the axis from the centre, of every panel's lowest point
   std::vector<double> panel_angles_rad;  // one per panel
+  // Each panel's own hem height, m (one per panel); empty: hem_height_m for every panel.
+  std::vector<double> panel_hem_heights_m;
 };
 
+// Ramanujan's perimeter of the ellipse with semi-axes a and b (exact for a circle), m.
+double ellipse_perimeter_m(double a_m, double b_m);
+
 // Unwelded positions (mesh's panel vertex numbering), m. Throws std::invalid_argument for a
-// zero axis, a front along the axis, non-positive semi-axes or a wrong count of angles.
+// zero axis, a front along the axis, non-positive semi-axes or a wrong count of angles or
+// hem heights.
 std::vector<Vec3> wrap_panels_round_axis(const Garment& garment, const SimulationMesh& mesh,
                                          const PanelWrap& wrap);
 

@@ -111,19 +111,31 @@ DressingResult dress(const Problem& problem, const Garment& garment,
   std::vector<Vec3>& v = open.velocities();
   x = start_m;
   std::fill(v.begin(), v.end(), Vec3::Zero());
+  // A start vertex inside the shrunk body goes out along the body's normal by the depth found
+  // (and a clearance of a tenth of a mean edge), so that a placement that touches the body
+  // still dresses; deeper than half the garment's size it is no near miss but a placement on
+  // the wrong side of the body, refused.
+  DressingResult result;
+  const double push_limit_m = 0.5 * open.size_m();
+  const double push_clearance_m = 0.1 * open.mean_edge_m();
   for (std::size_t u = 0; u < x.size(); ++u) {
-    const double g = body.query(x[u]).signed_distance_m;
-    if (g < 0.0) {
+    const SurfacePoint found = body.query(x[u]);
+    const double g = found.signed_distance_m;
+    if (g >= 0.0) continue;
+    if (-g > push_limit_m) {
       const auto [p, i] = panel_vertex(welded, int(u));
       std::ostringstream message;
       message << "dressing: panel " << garment.panels[p].name << " vertex " << i << " starts " << -g
               << " m inside the body shrunk to " << settings.start_scale << " at " << where(x[u])
-              << "; place the panels further out or shrink the body more";
+              << " (more than half the garment's size, " << push_limit_m
+              << " m); place the panels further out or shrink the body more";
       throw std::invalid_argument(message.str());
     }
+    x[u] += (push_clearance_m - g) * found.outward_normal;
+    ++result.vertices_pushed_out;
+    result.deepest_push_m = std::max(result.deepest_push_m, -g);
   }
 
-  DressingResult result;
   result.closed_below_m = settings.closed_fraction * open.mean_edge_m();
   const double runaway_m = 10.0 * open.size_m();
   const double damping = open.damping_per_s();
@@ -177,7 +189,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
                          "during the dressing at frame " + std::to_string(result.frames));
     if (result.frames % 64 == 0)
       for (std::size_t u = 0; u < x.size(); ++u)
-        if (!((x[u] - start_m[u]).norm() < runaway_m))
+        if (!((x[u] - start_m[u]).norm() < runaway_m + push_limit_m))
           throw fail(StopReason::ran_away,
                      "diverged (panel vertex " + std::to_string(u) + " ran away)");
   }

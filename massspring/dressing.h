@@ -59,15 +59,21 @@ struct DressingResult {
   // largest depth among them, m.
   int vertices_put_back = 0;
   double deepest_m = 0.0;
+  // Start vertices found inside the shrunk body and pushed out along its normal, and the
+  // deepest of them, m.
+  int vertices_pushed_out = 0;
+  double deepest_push_m = 0.0;
   double wall_seconds = 0.0;
 };
 
 // Dresses `problem.body` (the whole body; it must outlive the call) in `garment` (whose welded
 // mesh is problem.mesh) from the unwelded positions `start_m` (panel vertices, numbered as
-// problem.mesh's). Throws SolverError when the seams have not closed within the frames
-// (naming the seam with the widest gap, the gap and where), when the motion diverges, or when
-// a vertex ends inside the body (which, how deep, where); std::invalid_argument for a start of
-// the wrong size or a vertex that starts inside the shrunk body.
+// problem.mesh's). A start vertex inside the shrunk body is pushed out along the body's normal
+// by its depth (plus a tenth of a mean edge). Throws SolverError when the seams have not closed
+// within the frames (naming the seam with the widest gap, the gap and where), when the motion
+// diverges, or when a vertex ends inside the body (which, how deep, where);
+// std::invalid_argument for a start of the wrong size or a vertex that starts inside the shrunk
+// body deeper than half the garment's size (the square root of its rest area).
 DressingResult dress(const Problem& problem, const Garment& garment,
                      const std::vector<Vec3>& start_m, const DressingSettings& settings);
 

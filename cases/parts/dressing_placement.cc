@@ -3,6 +3,7 @@
 // (massspring/dressing.h): seam springs close the seams while the body grows from a shrunk
 // start to its shape; the welded garment is the start of the load steps, on either backend
 // (docs/dressing.md).
+#include "cases/coarse_dressing.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
 #include "contact/panel_wrap.h"
@@ -41,76 +42,6 @@ std::map<std::string, double> parse_angles(const std::vector<std::string>& words
     }
   }
   return angles;
-}
-
-// Coarse to fine (Coarse edge length): the case's garment meshed at `coarse_m` is dressed by
-// `dress_coarse` in a scenario of its own; with a settle rule (a relative tolerance > 0) the
-// welded coarse garment then settles as the case's first load step would (gravity, friction),
-// on the mass-spring backend with its default settings, the rms stop rule at that relative
-// tolerance and the rule's net force tolerance and slide damping, so that the slow slide of a
-// dressed top over the body is done on the cheap mesh;
-// its state is carried to the case's mesh in pattern space (core/mesh_transfer.h). Fine vertices on
-// a coarse triangle's chord of the body may lie inside it by the chord's sagitta (h^2 / 8 R: about
-// 2 mm for 30 mm edges round a 5 cm arm); up to a quarter of a coarse edge they go back onto the
-// surface, as a dressing's own welded vertices do.
-struct CoarseSettle {
-  double relative_tolerance = 0.0;   // 0: the coarse garment is carried as dressed
-  double net_force_tolerance = 0.0;  // Mass spring/Net force tolerance of the settle
-  double slide_damping_per_s = 0.0;  // Mass spring/Slide damping of the settle
-};
-
-std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
-                                      const CoarseSettle& settle_rule,
-                                      const PlacementMaker& dress_coarse) {
-  if (scenario.parameters.garment.kind != "pattern file")
-    throw std::invalid_argument(
-        "Placement/Dressing/Coarse edge length: only a garment cut from a pattern "
-        "(Garment/Kind = pattern file) is meshed at another edge length, not Garment/Kind = " +
-        scenario.parameters.garment.kind);
-  CaseParameters coarse = scenario.parameters;
-  coarse.garment.spacing.pattern_edge_length_m = coarse_m;
-  coarse.placement.place = dress_coarse;
-  std::unique_ptr<Scenario> dressed;
-  try {
-    dressed = make_scenario(coarse);
-  } catch (const SolverError& error) {
-    std::ostringstream message;
-    message << "on the coarse mesh (Placement/Dressing/Coarse edge length " << coarse_m
-            << " m): " << error.what();
-    throw SolverError(error.reason(), message.str());
-  }
-  std::vector<Vec3> coarse_x = dressed->start_positions_m;
-  if (settle_rule.relative_tolerance > 0) {
-    MassSpringParameters settle;
-    settle.stop.norm = StopNorm::rms;
-    settle.stop.relative_tolerance = settle_rule.relative_tolerance;
-    settle.net_force_tolerance = settle_rule.net_force_tolerance;
-    settle.slide_damping_per_s = settle_rule.slide_damping_per_s;
-    settle.contact_updates = 0;
-    MassSpringBackend backend(dressed->problem, settle);
-    backend.set_positions(coarse_x);
-    const StepReport report = backend.solve(dressed->prepare_step(0));
-    std::printf("  dressing: the coarse mesh settled: %s\n", report.text().c_str());
-    coarse_x = backend.state().positions_m;
-  }
-  std::vector<Vec3> x = transfer_positions(dressed->mesh, coarse_x, scenario.mesh);
-  const double allowed_m = 0.25 * dressed->mean_edge_length_m;
-  const SurfaceReturn back = return_onto_surface(*scenario.problem.body, x, allowed_m);
-  if (back.deepest_m > allowed_m) {
-    std::ostringstream message;
-    message << "dressing: carried from the coarse mesh, vertex " << back.deepest_point << " lies "
-            << back.deepest_m << " m inside the body (more than a quarter of a coarse edge, "
-            << allowed_m << " m); dress on a finer coarse mesh (Placement/Dressing/Coarse edge "
-            << "length)";
-    throw SolverError(StopReason::passed_into_body, message.str());
-  }
-  std::printf(
-      "  dressing: carried from the coarse mesh (%d vertices, mean edge %.3g m) to %d vertices; "
-      "%d put back on the body from at most %.3g m inside\n",
-      dressed->mesh.n_vertices, dressed->mean_edge_length_m, scenario.mesh.n_vertices,
-      back.points_moved, back.deepest_m);
-  std::fflush(stdout);
-  return x;
 }
 
 }  // namespace
@@ -241,12 +172,7 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
           wrap_panels_round_axis(scenario.garment, scenario.mesh, placed);
       try {
         const DressingResult dressed = dress(scenario.problem, scenario.garment, open, settings);
-        std::printf(
-            "  dressing: seams closed (largest gap %.3g m < %.3g m) after %d frames, %.1f s; %d "
-            "welded vertices put back on the body from at most %.3g m inside\n",
-            dressed.largest_seam_gap_m, dressed.closed_below_m, dressed.frames,
-            dressed.wall_seconds, dressed.vertices_put_back, dressed.deepest_m);
-        std::fflush(stdout);
+        print_dressing(dressed);
         return dressed.welded_positions_m;
       } catch (const std::invalid_argument& error) {
         throw std::invalid_argument(std::string("Placement/Dressing: ") + error.what());

@@ -28,6 +28,7 @@ PartEntry<PlacementMaker> flat_on_plane_placement_entry();
 PartEntry<PlacementMaker> tube_round_axis_placement_entry();
 PartEntry<PlacementMaker> dressing_placement_entry();
 PartEntry<PlacementMaker> pattern_arrangement_placement_entry();
+PartEntry<PlacementMaker> arrangement_placement_entry();
 PartEntry<PlacementMaker> from_file_placement_entry();
 
 // The dressing stage's frame counts (massspring/dressing.h), shared by the placements that

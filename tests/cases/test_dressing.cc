@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -172,22 +173,50 @@ TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
   }
 }
 
-TEST(Dressing, PanelsPlacedInsideTheShrunkBodyAreRefusedNamingTheVertex) {
+TEST(Dressing, PanelsPlacedInsideTheShrunkBodyArePushedOutAndSewn) {
   // The cylinder at alpha 1.2 (7.17 cm) shrunk to 0.9 (6.45 cm) and the panels on a 6 cm circle:
-  // every vertex starts 4.5 mm inside it.
+  // every vertex starts 4.5 mm inside it, far less than half the garment's size (the square
+  // root of its rest area, 0.30 m): each is pushed out along the cylinder's normal by its depth
+  // (plus a tenth of an edge) and the dressing goes on. Sewn, the tube lies on the whole
+  // cylinder: the welded vertices are put back onto its surface (measured at its radius to
+  // 1e-6 m); 0.1 mm allowed either side.
   CaseFile file;
   dressing_case(file, 0.06, {"Placement/Dressing/Start scale=0.9"});
   testing::start_cylinder_at(file, 1.2, rest_radius_45T_m);
   CaseParameters parameters = file.parameters();
+  parameters.output.write_files = false;
+  const std::unique_ptr<Scenario> scenario = make_scenario(parameters);
+  const double r_m = 1.2 * rest_radius_45T_m;
+  double smallest = 1e9, largest = 0.0;
+  for (const Vec3& x : scenario->start_positions_m) {
+    const double radius = std::hypot(x.y(), x.z());
+    smallest = std::min(smallest, radius);
+    largest = std::max(largest, radius);
+  }
+  std::printf("sewn after the push-out: radius %.6f to %.6f m (cylinder %.6f m)\n", smallest,
+              largest, r_m);
+  EXPECT_GT(smallest, r_m - 1e-4);
+  EXPECT_LT(largest, r_m + 1e-4);
+}
+
+TEST(Dressing, PanelsPlacedDeepInsideTheShrunkBodyAreRefusedNamingTheVertex) {
+  // The cylinder at alpha 4 (23.9 cm) shrunk to 0.9 (21.5 cm) and the panels on a 4 cm circle:
+  // every vertex starts 17.5 cm inside it, deeper than half the garment's size (0.15 m): no near
+  // miss but a placement on the wrong side of the body, refused naming the vertex.
+  CaseFile file;
+  dressing_case(file, 0.04, {"Placement/Dressing/Start scale=0.9", "Protocol/Final alpha=4"});
+  testing::start_cylinder_at(file, 4.0, rest_radius_45T_m);
+  CaseParameters parameters = file.parameters();
   try {
     make_scenario(parameters);
-    FAIL() << "a start inside the body was accepted";
+    FAIL() << "a start deep inside the body was accepted";
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("Placement/Dressing: dressing: panel 4 5T panel 1 vertex 0 starts"),
               std::string::npos)
         << message;
     EXPECT_NE(message.find("inside the body shrunk to 0.9"), std::string::npos) << message;
+    EXPECT_NE(message.find("more than half the garment's size"), std::string::npos) << message;
   }
 }
 
