@@ -143,12 +143,7 @@ PartEntry<PlacementMaker> arrangement_placement_entry() {
     prm.declare_double("Side seam below armpit", 0.03, -1, 1,
                        "The top of each panel's side seam (its most upright seam to another "
                        "torso panel) this far below the lower armpit along the torso's axis (m).");
-    prm.declare_integer("Growth frames", 2000, 0, 100000000,
-                        "RK4 frames over which the body grows linearly to its own size "
-                        "(Placement/Dressing/Growth frames).");
-    prm.declare_integer("Seam ramp frames", 500, 0, 100000000,
-                        "RK4 frames over which the seam springs' stiffness rises linearly from "
-                        "zero to full.");
+    declare_dressing_frames(prm);
     prm.declare_double("Coarse edge length", 0, 0, ParameterTree::unbounded,
                        "Above 0: dress the garment meshed at this edge length (m) and carry its "
                        "welded state to the case's mesh in pattern space; 0: dress the case's "
@@ -164,8 +159,7 @@ PartEntry<PlacementMaker> arrangement_placement_entry() {
     a.options.side_seam_below_armpit_m = prm.get_double("Side seam below armpit");
     a.coarse_m = prm.get_double("Coarse edge length");
     a.dressing.start_scale = a.options.start_scale;
-    a.dressing.growth_frames = prm.get_integer("Growth frames");
-    a.dressing.seam_ramp_frames = prm.get_integer("Seam ramp frames");
+    read_dressing_frames(prm, a.dressing);
     a.dressing.progress = &std::cout;
     return arrange(a, std::nullopt);
   };
