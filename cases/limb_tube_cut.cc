@@ -80,6 +80,21 @@ std::vector<PointValue> parse_point_values(const std::string& text, const std::s
   return values;
 }
 
+LimbTubeSpec parse_limb_tube_spec(const std::string& limb, const std::string& from,
+                                  const std::string& to, double girth_step_m,
+                                  const std::string& negative_ease) {
+  LimbTubeSpec spec;
+  if (limb != "leg left" && limb != "leg right")
+    throw std::invalid_argument("Limb = '" + limb + "': expected 'leg left' or 'leg right'");
+  spec.side = limb == "leg left" ? 0 : 1;
+  spec.from = parse_limb_tube_end(from, "From");
+  spec.to = parse_limb_tube_end(to, "To");
+  if (!(girth_step_m > 0)) throw std::invalid_argument("Girth step must be positive (m)");
+  spec.girth_step_m = girth_step_m;
+  spec.negative_ease = parse_point_values(negative_ease, "Negative ease");
+  return spec;
+}
+
 double LimbTubeCut::height_of(const std::string& point) const {
   for (const PointValue& p : points)
     if (p.point == point) return p.value;

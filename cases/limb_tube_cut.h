@@ -36,6 +36,12 @@ struct LimbTubeSpec {
   std::vector<PointValue> negative_ease;  // at measuring points; empty: none
 };
 
+// The spec from the entries of Garment/Limb tube as written (Limb, From, To, Girth step,
+// Negative ease). Throws std::invalid_argument naming the entry at fault.
+LimbTubeSpec parse_limb_tube_spec(const std::string& limb, const std::string& from,
+                                  const std::string& to, double girth_step_m,
+                                  const std::string& negative_ease);
+
 struct LimbTubeCut {
   Vec3 bottom_m = Vec3::Zero();  // the axis's point at the tube's bottom edge
   Vec3 up = Vec3::UnitZ();       // the limb's axis, unit, up the limb

@@ -58,12 +58,9 @@ PartEntry<GarmentMaker> limb_tube_garment_entry() {
                      "with the Negative ease.");
   };
   e.parse = [](ParameterTree& prm) -> GarmentMaker {
-    LimbTubeSpec spec;
-    spec.side = prm.get("Limb") == "leg left" ? 0 : 1;
-    spec.from = parse_limb_tube_end(prm.get("From"), "From");
-    spec.to = parse_limb_tube_end(prm.get("To"), "To");
-    spec.girth_step_m = prm.get_double("Girth step");
-    spec.negative_ease = parse_point_values(prm.get("Negative ease"), "Negative ease");
+    const LimbTubeSpec spec =
+        parse_limb_tube_spec(prm.get("Limb"), prm.get("From"), prm.get("To"),
+                             prm.get_double("Girth step"), prm.get("Negative ease"));
     const int n_panels = prm.get_integer("Number of panels");
     const std::string relaxed_text = prm.get("Relaxed girths");
     PiecewiseLinear relaxed;
