@@ -62,7 +62,7 @@ int design_command(const CommandLine& cl, std::ostream& out) {
       known_largest_strain(parameters.law, parameters.fabric, settings.largest_strain));
 
   DesignProblem problem;
-  problem.points = design_point_heights(settings.points, limb.length_m);
+  problem.points = design_point_heights(settings.points, limb.length_m, limb.landmark_points);
   for (const NamedValue& p : problem.points) problem.girths_m.push_back(limb.girths_m.at(p.value));
   for (double t : target_pressures_mmHg(problem.points, settings.target))
     problem.targets_Pa.push_back(t * units::pascal_per_mmHg);
@@ -74,6 +74,7 @@ int design_command(const CommandLine& cl, std::ostream& out) {
   CaseSimulationSetup setup;
   setup.case_file = settings.case_file;
   setup.case_overrides = file.case_overrides();
+  setup.garment_kind = limb.kind;
   setup.limb_girths_m = limb.girths_m;
   setup.points = problem.points;
   setup.band_width_m = settings.band_width_m;

@@ -1,6 +1,7 @@
 #include "app/girths_command.h"
 
 #include "cases/case_parameters.h"
+#include "cases/scenario.h"
 #include "cases/scenario_body.h"
 #include "contact/surface_slice.h"
 
@@ -13,9 +14,7 @@ int girths_command(const CommandLine& cl, std::ostream& out) {
   CaseFile file;
   file.read(cl.case_files.front(), cl.overrides);
   const CaseParameters parameters = file.parameters();
-  const Garment garment =
-      parameters.garment.make(parameters.garment.name, parameters.garment.spacing);
-  const std::unique_ptr<ScenarioBody> body = parameters.body.make(garment);
+  const std::unique_ptr<ScenarioBody> body = make_case_body(parameters);
   body->morph(0, body->initial_alpha());
   const DisplayMesh mesh = body->body().display_mesh();
   TriangleSurface surface;

@@ -7,6 +7,7 @@
 #include "body/body_report.h"
 #include "body/body_size.h"
 #include "cases/case_parameters.h"
+#include "cases/scenario.h"
 #include "cases/scenario_body.h"
 #include "contact/mesh_import.h"
 #include "contact/polygon_mesh.h"
@@ -78,9 +79,7 @@ TriangleSurface case_body(const MeasureOptions& o, std::string& description) {
   CaseFile file;
   file.read(o.file, o.overrides);
   const CaseParameters parameters = file.parameters();
-  const Garment garment =
-      parameters.garment.make(parameters.garment.name, parameters.garment.spacing);
-  const std::unique_ptr<ScenarioBody> body = parameters.body.make(garment);
+  const std::unique_ptr<ScenarioBody> body = make_case_body(parameters);
   body->morph(0, body->initial_alpha());
   description = body->describe();
   const DisplayMesh mesh = body->body().display_mesh();

@@ -193,8 +193,10 @@ void declare_constraints(ParameterHandler& prm) {
                     "ends (axial stretch 1); 'all' on a stocking: the knit gripped along the "
                     "leg, free round it; empty: free ends.");
   prm.declare_entry("Held direction", "axis", Patterns::Anything(),
-                    "Direction the held groups may not move along: 'axis' for the body's own "
-                    "(a cylinder's axis, a plane's normal), or three numbers x,y,z (-).");
+                    "Direction the held groups may not move along: 'axis' for the axis a "
+                    "garment cut to the body was cut along (Garment/Kind = limb tube: the "
+                    "limb's), else the body's own (a cylinder's axis, a plane's normal), or "
+                    "three numbers x,y,z (-).");
   prm.declare_entry("Fixed groups", "", Patterns::Anything(),
                     "Comma-separated vertex groups that do not move at all.");
   prm.leave_subsection();

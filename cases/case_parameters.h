@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace dealii {
@@ -31,7 +32,38 @@ class DeclaredParameters;
 // What each scenario part's parser returns (cases/part_registry.h): its settings, ready to
 // build the part. Plain functions, so that a case's parameters can be copied (a convergence
 // study builds one scenario per mesh level).
-using GarmentMaker = std::function<Garment(const std::string& name, const MeshSpacing& spacing)>;
+// A garment cut to the body (Garment/Kind = limb tube) and the line it was cut along: the limb's
+// axis through the tube's middle, `axis` unit and up the limb. Placement/Tube round axis/Axis =
+// garment and Constraints/Held direction = axis follow it.
+struct GarmentLine {
+  Vec3 centre_m = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+};
+struct GarmentOnBody {
+  Garment garment;
+  GarmentLine line;
+};
+// Most garments need only their own entries (`make`); a garment cut to the body's landmarks and
+// girths is made after the body, from it (`make_on_body`), and the body must then not need the
+// garment (a mesh body).
+struct GarmentMaker {
+  std::function<Garment(const std::string& name, const MeshSpacing& spacing)> make;
+  std::function<GarmentOnBody(const std::string& name, const MeshSpacing& spacing,
+                              const ScenarioBody& body)>
+      make_on_body;
+
+  GarmentMaker() = default;
+  template <class Make,
+            std::enable_if_t<
+                std::is_invocable_r_v<Garment, const Make&, const std::string&, const MeshSpacing&>,
+                int> = 0>
+  GarmentMaker(Make m) : make(std::move(m)) {}  // NOLINT: a part's maker converts implicitly
+
+  bool needs_body() const { return static_cast<bool>(make_on_body); }
+  // The garment of a part that needs only its entries. Throws std::invalid_argument for one cut
+  // to the body (made by make_scenario, or with make_case_body's body).
+  Garment operator()(const std::string& name, const MeshSpacing& spacing) const;
+};
 using BodyMaker = std::function<std::unique_ptr<ScenarioBody>(const Garment& garment)>;
 // The welded start positions of the garment on the scenario's body, m. A placement may fit the
 // garment to the body first (Placement/Kind = arrangement's ease against the body: its

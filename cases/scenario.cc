@@ -17,16 +17,19 @@ namespace {
 
 // Constraints/Held groups and Fixed groups on the garment's vertex groups.
 std::vector<VertexConstraint> make_constraints(const ConstraintSettings& settings,
-                                               const SimulationMesh& mesh,
-                                               const ScenarioBody& body) {
+                                               const SimulationMesh& mesh, const ScenarioBody& body,
+                                               const std::optional<GarmentLine>& line) {
   std::vector<VertexConstraint> constraints;
   try {
     if (!settings.held_groups.empty()) {
-      const std::optional<Vec3> direction =
-          settings.held_direction ? settings.held_direction : body.axis();
+      // 'axis': the line a garment cut to the body was cut along, else the body's own axis.
+      const std::optional<Vec3> direction = settings.held_direction ? settings.held_direction
+                                            : line                  ? line->axis
+                                                                    : body.axis();
       if (!direction)
         throw std::invalid_argument("Held direction = axis, but the body (" + body.describe() +
-                                    ") has no axis: give a direction x,y,z");
+                                    ") has no axis and the garment is not cut along one: give a "
+                                    "direction x,y,z");
       for (const std::string& group : settings.held_groups)
         constraints.push_back(held_along(mesh, group, *direction));
     }
@@ -84,7 +87,17 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   auto scenario = std::make_unique<Scenario>();
   Scenario& s = *scenario;
   s.parameters = parameters;
-  s.garment = parameters.garment.make(parameters.garment.name, parameters.garment.spacing);
+  // A garment cut to the body is made from it; every other one first (a cylinder body is sized
+  // by its tube).
+  if (parameters.garment.make.needs_body()) {
+    s.body = make_case_body(parameters);
+    GarmentOnBody cut = parameters.garment.make.make_on_body(parameters.garment.name,
+                                                             parameters.garment.spacing, *s.body);
+    s.garment = std::move(cut.garment);
+    s.garment_line = cut.line;
+  } else {
+    s.garment = parameters.garment.make(parameters.garment.name, parameters.garment.spacing);
+  }
   // Each panel was checked as it was meshed; the run holds them all.
   double n_vertices = 0;
   for (const Panel& panel : s.garment.panels) n_vertices += panel.rest_positions_m.size();
@@ -93,7 +106,7 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   s.mesh = weld(s.garment);
   s.law = make_material_law(parameters.law, parameters.fabric);
   s.mean_edge_length_m = mean_rest_edge_length_m(s.mesh);
-  s.body = parameters.body.make(s.garment);
+  if (!s.body) s.body = parameters.body.make(s.garment);
   s.body->check_final_alpha(parameters.protocol.final_alpha);
   s.alphas = alpha_schedule(s.body->initial_alpha(), parameters.protocol.final_alpha,
                             parameters.protocol.alpha_increment);
@@ -108,11 +121,26 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   p.friction_coefficient = parameters.friction_coefficient;
   p.tangential_stiffness_Pa_per_m =
       parameters.tangential_penalty_ratio * p.contact_stiffness_Pa_per_m;
-  p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body);
+  p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line);
   p.gravity_m_per_s2 = -parameters.protocol.gravity_m_per_s2 * parameters.protocol.up.normalized();
   s.start_positions_m = parameters.placement.place(s);
   check_start(s, s.start_positions_m);
   return scenario;
+}
+
+std::unique_ptr<ScenarioBody> make_case_body(const CaseParameters& parameters) {
+  // A body that needs the garment (a cylinder sized by its tube) cannot carry one cut to the
+  // body; it is given an empty garment and the garment's own cut then fails on it.
+  if (parameters.garment.make.needs_body()) return parameters.body.make(Garment{});
+  return parameters.body.make(
+      parameters.garment.make(parameters.garment.name, parameters.garment.spacing));
+}
+
+Garment GarmentMaker::operator()(const std::string& name, const MeshSpacing& spacing) const {
+  if (!make)
+    throw std::invalid_argument("garment '" + name +
+                                "' is cut to the body: it is made from the body (make_scenario)");
+  return make(name, spacing);
 }
 
 LoadStep Scenario::prepare_step(int step) {

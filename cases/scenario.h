@@ -9,6 +9,7 @@
 #include "core/garment.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace tightfit {
@@ -26,6 +27,8 @@ struct Scenario {
   std::unique_ptr<MaterialLaw> law;
   std::unique_ptr<ScenarioBody> body;
   Problem problem;  // points into the members above
+  // The line a garment cut to the body was cut along (GarmentMaker::make_on_body), if it was.
+  std::optional<GarmentLine> garment_line;
   double mean_edge_length_m = 0.0;
   // Every load step's body morph parameter, the first the settling one.
   std::vector<double> alphas;
@@ -42,5 +45,8 @@ struct Scenario {
 // can never press on the body, an unknown vertex group, a bad value, a placement that starts
 // the garment inside the body or over a hundred garment sizes away from it).
 std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters);
+
+// The case's body alone, as make_scenario makes it (for commands that look at the body only).
+std::unique_ptr<ScenarioBody> make_case_body(const CaseParameters& parameters);
 
 }  // namespace tightfit

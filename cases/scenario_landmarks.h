@@ -8,6 +8,11 @@
 namespace tightfit {
 
 struct Scenario;
+class ScenarioBody;
+
+// The body's closed surface as the scenario holds it (its display mesh: a mesh body's own
+// triangles).
+TriangleSurface scenario_body_surface(const ScenarioBody& body);
 
 // Resolves the named shapes of `regions` on the scenario's body as it is now, if any; prints
 // nothing. Throws BodyMeasureError naming the region and the landmark not found.

@@ -12,6 +12,7 @@ const PartRegistry<GarmentMaker>& garment_kinds() {
     PartRegistry<GarmentMaker> r("Garment");
     r.add(tube_garment_entry());
     r.add(tapered_tube_garment_entry());
+    r.add(limb_tube_garment_entry());
     r.add(sheet_garment_entry());
     r.add(pattern_file_garment_entry());
     return r;

@@ -18,8 +18,12 @@ std::vector<BandPressure> simulate_cut(const CaseSimulationSetup& setup,
   CaseFile file;
   file.read(setup.case_file, setup.case_overrides);
   const std::vector<CutKnot> cut = design_cut(setup.limb_girths_m, setup.points, circumferences_m);
-  file.set("Garment/Tapered tube/Girths=" + relaxed_girths_setting(cut));
-  file.set("Garment/Tapered tube/Negative ease=");
+  if (setup.garment_kind == "limb tube") {
+    file.set("Garment/Limb tube/Relaxed girths=" + relaxed_girths_setting(cut));
+  } else {
+    file.set("Garment/Tapered tube/Girths=" + relaxed_girths_setting(cut));
+    file.set("Garment/Tapered tube/Negative ease=");
+  }
   file.set("Output/Directory=" + output_dir);
   if (!backend.empty()) file.set("Solver/Backend=" + backend);
   CaseParameters parameters = file.parameters();
@@ -35,10 +39,12 @@ std::vector<BandPressure> simulate_cut(const CaseSimulationSetup& setup,
     }
   }
   if (!scenario) scenario = make_scenario(parameters);
-  // The limb's axis: the direction the garment is held along, else the body's own.
+  // The limb's axis: the direction the garment is held along, else the line it was cut along
+  // (a limb tube), else the body's own.
   const std::optional<Vec3> axis = parameters.constraints.held_direction
                                        ? parameters.constraints.held_direction
-                                       : scenario->body->axis();
+                                   : scenario->garment_line ? scenario->garment_line->axis
+                                                            : scenario->body->axis();
   if (!axis)
     throw std::invalid_argument(
         "the case's garment is not held along a direction and its body "

@@ -16,6 +16,7 @@ namespace tightfit {
 struct CaseSimulationSetup {
   std::string case_file;
   std::vector<std::string> case_overrides;
+  std::string garment_kind = "tapered tube";  // or limb tube (cut to the body's leg)
   PiecewiseLinear limb_girths_m;
   std::vector<NamedValue> points;  // name, height along the garment (m)
   double band_width_m = 0.02;

@@ -1,5 +1,9 @@
 #include "cases/design/design_file.h"
 
+#include "cases/case_parameters.h"
+#include "cases/limb_tube_cut.h"
+#include "cases/scenario.h"
+#include "cases/scenario_landmarks.h"
 #include "core/tensile_curves.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -46,8 +50,10 @@ void declare_design(ParameterHandler& prm) {
                     "Path/To/Entry=value; ...: entries of the case set for the design (the "
                     "fabric, a coarser mesh), as --set would, separated by ';'.");
   prm.declare_entry("Points", "B:0.02, C:0.24, G:0.55", Patterns::Anything(),
-                    "NAME:HEIGHT, ...: the measuring points (RAL-GZ 387: B, B1, C, D, E, F, G) "
-                    "at heights along the garment from its bottom edge (m), increasing.");
+                    "NAME or NAME:HEIGHT, ...: the measuring points (RAL-GZ 387: B, B1, C, D, E, "
+                    "F, G) in order up the limb; a point without a height lies where the body's "
+                    "landmarks put it (a case whose Garment/Kind is limb tube, docs/stocking.md), "
+                    "one with a height at that height along the garment from its bottom edge (m).");
   prm.declare_entry("Target", "class", Patterns::Selection("class|pressures"),
                     "class: a compression class at B with the degressive Profile; pressures: "
                     "the mean pressure at every point (Pressures).");
@@ -93,7 +99,52 @@ void declare_case_garment(ParameterHandler& prm) {
   prm.declare_entry("Girths", "0:0.30, 0.24:0.36", Patterns::Anything(), "");
   prm.declare_entry("Negative ease", "", Patterns::Anything(), "");
   prm.leave_subsection();
+  prm.enter_subsection("Limb tube");
+  prm.declare_entry("Limb", "leg left", Patterns::Anything(), "");
+  prm.declare_entry("From", "B - 0.02", Patterns::Anything(), "");
+  prm.declare_entry("To", "G + 0.04", Patterns::Anything(), "");
+  prm.declare_entry("Girth step", "0.05", Patterns::Anything(), "");
+  prm.declare_entry("Negative ease", "", Patterns::Anything(), "");
   prm.leave_subsection();
+  prm.leave_subsection();
+}
+
+// A limb tube's limb: the case's body measured, the tube cut to its leg as the case cuts it.
+LimbGarment limb_tube_limb(ParameterHandler& garment, const std::string& case_file,
+                           const std::vector<std::string>& case_overrides) {
+  garment.enter_subsection("Garment");
+  garment.enter_subsection("Limb tube");
+  const std::string limb = garment.get("Limb"), from = garment.get("From"), to = garment.get("To"),
+                    step = garment.get("Girth step"), ease = garment.get("Negative ease");
+  garment.leave_subsection();
+  garment.leave_subsection();
+  const std::string where = "case file '" + case_file + "': Garment/Limb tube: ";
+  LimbTubeSpec spec;
+  try {
+    spec = parse_limb_tube_spec(limb, from, to, std::stod(step), ease);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(where + e.what());
+  }
+  if (ease.find_first_not_of(" \t") == std::string::npos)
+    throw std::invalid_argument(where +
+                                "Negative ease is empty; a design states the cut's ease "
+                                "against the limb's girths");
+  CaseFile file;
+  file.read(case_file, case_overrides);
+  const std::unique_ptr<ScenarioBody> body = make_case_body(file.parameters());
+  const TriangleSurface surface = scenario_body_surface(*body);
+  LimbTubeCut cut;
+  try {
+    cut = cut_tube_to_leg(surface, measure_body(surface), spec);
+  } catch (const BodyMeasureError& e) {
+    throw BodyMeasureError(where + "the " + limb + " cannot be measured: " + e.what());
+  }
+  LimbGarment g;
+  g.kind = "limb tube";
+  g.length_m = cut.length_m;
+  g.girths_m = cut.girths_m;
+  for (const PointValue& p : cut.points) g.landmark_points.push_back({p.point, p.value});
+  return g;
 }
 
 // "Path/To/Entry=value" into `prm`, as the text "subsection Path ... set Entry = value ... end"
@@ -170,7 +221,7 @@ DesignSettings DesignFile::settings() const {
     s.case_file = prm.get("Case");
     if (s.case_file.empty())
       throw std::invalid_argument("Design/Case: no case file named (the garment to design)");
-    s.points = named(prm.get("Points"), "Design/Points");
+    s.points = parse_design_points(prm.get("Points"), "Design/Points");
     const bool by_class = prm.get("Target") == "class";
     s.target.kind =
         by_class ? DesignTarget::Kind::compression_class : DesignTarget::Kind::pressures;
@@ -210,6 +261,9 @@ LimbGarment DesignFile::limb_garment() const {
   for (const std::string& o : case_overrides_) assign(garment, o, false);
   garment.enter_subsection("Garment");
   const std::string kind = garment.get("Kind");
+  garment.leave_subsection();
+  if (kind == "limb tube") return limb_tube_limb(garment, s.case_file, case_overrides_);
+  garment.enter_subsection("Garment");
   garment.enter_subsection("Tapered tube");
   const std::string length = garment.get("Length"), girths = garment.get("Girths"),
                     ease = garment.get("Negative ease");
@@ -217,13 +271,14 @@ LimbGarment DesignFile::limb_garment() const {
   garment.leave_subsection();
   if (kind != "tapered tube")
     throw std::invalid_argument("case file '" + s.case_file + "': Garment/Kind is '" + kind +
-                                "'; a design cuts a tapered tube");
+                                "'; a design cuts a tapered tube or a limb tube");
   if (ease.find_first_not_of(" \t") == std::string::npos)
     throw std::invalid_argument(
         "case file '" + s.case_file +
         "': Garment/Tapered tube/Negative ease is empty, so its Girths are the garment's and not "
         "the limb's; a design needs the limb's girths (Girths with a Negative ease)");
   LimbGarment limb;
+  limb.kind = kind;
   try {
     limb.length_m = std::stod(length);
   } catch (const std::exception&) {

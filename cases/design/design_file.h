@@ -29,8 +29,11 @@ struct DesignSettings {
 
 // The garment of the case as the design sees it: a tapered tube cut to the limb's girths.
 struct LimbGarment {
+  std::string kind;  // Garment/Kind: tapered tube or limb tube
   double length_m = 0.0;
   PiecewiseLinear girths_m;  // the limb's, at heights along the garment
+  // A limb tube's: the measuring points the body's landmarks give on it, heights along it (m).
+  std::vector<NamedValue> landmark_points;
 };
 
 class DesignFile {
@@ -49,8 +52,10 @@ class DesignFile {
   DesignSettings settings() const;
   const std::vector<std::string>& case_overrides() const { return case_overrides_; }
   // The case's garment, read from the case file and the case's overrides: Garment/Kind must be
-  // tapered tube with a Negative ease, so that its Girths are the limb's. Throws
-  // std::invalid_argument saying why otherwise.
+  // tapered tube with a Negative ease, so that its Girths are the limb's, or limb tube (cut to
+  // the body's leg: its girths and measuring points are found on the case's body). Throws
+  // std::invalid_argument saying why otherwise, BodyMeasureError when the body's leg cannot be
+  // measured.
   LimbGarment limb_garment() const;
 
   void print(std::ostream& out) const;

@@ -55,8 +55,49 @@ std::vector<NamedValue> parse_named_values(const std::string& text, const std::s
   return values;
 }
 
-std::vector<NamedValue> design_point_heights(const std::vector<NamedValue>& stated_heights,
-                                             double length_m) {
+std::vector<NamedValue> parse_design_points(const std::string& text, const std::string& entry) {
+  std::vector<NamedValue> points;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    std::string piece = trimmed(text.substr(begin, comma - begin));
+    begin = comma + 1;
+    if (piece.empty()) continue;
+    if (piece.find(':') == std::string::npos) {
+      // A bare name: its height from the body's landmarks.
+      if (piece.find_first_of(" \t") != std::string::npos)
+        throw std::invalid_argument(entry + ": cannot read '" + piece +
+                                    "'; expected NAME or NAME:HEIGHT (e.g. B or B:0.02)");
+      if (find(points, piece))
+        throw std::invalid_argument(entry + ": point " + piece + " is given twice");
+      points.push_back({piece, std::nan("")});
+      continue;
+    }
+    for (const NamedValue& v : parse_named_values(piece, entry)) {
+      if (find(points, v.name))
+        throw std::invalid_argument(entry + ": point " + v.name + " is given twice");
+      points.push_back(v);
+    }
+  }
+  if (points.empty()) throw std::invalid_argument(entry + ": no point given");
+  return points;
+}
+
+std::vector<NamedValue> design_point_heights(const std::vector<NamedValue>& stated, double length_m,
+                                             const std::vector<NamedValue>& landmark_heights) {
+  std::vector<NamedValue> stated_heights = stated;
+  for (NamedValue& p : stated_heights) {
+    if (!std::isnan(p.value)) continue;
+    const NamedValue* found = find(landmark_heights, p.name);
+    if (!found)
+      throw std::invalid_argument(
+          "Points: " + p.name + " has no height, and " +
+          (landmark_heights.empty()
+               ? std::string("the case's garment is not cut to the body's landmarks")
+               : "the body's landmarks give no point " + p.name + " on the garment") +
+          ": give its height along the garment (" + p.name + ":HEIGHT, m)");
+    p.value = found->value;
+  }
   for (std::size_t k = 0; k < stated_heights.size(); ++k) {
     const NamedValue& p = stated_heights[k];
     if (!(p.value >= 0 && p.value <= length_m))

@@ -17,12 +17,19 @@ struct NamedValue {
 // std::invalid_argument naming `entry` and the piece it could not read, or a name given twice.
 std::vector<NamedValue> parse_named_values(const std::string& text, const std::string& entry);
 
-// The measuring points' heights along the garment (m from its bottom edge), in the order given,
-// from the design's own list. Throws std::invalid_argument when the heights do not increase or
-// lie outside [0, length_m]. (The one place a point's height is found: it can ask the body's
-// landmarks once they exist.)
+// Design/Points: "B, B1, C:0.2419, ...": each point's name, with a height along the garment (m)
+// or without one (its value then NaN: the height comes from the body's landmarks). Throws
+// std::invalid_argument naming `entry` and the piece it could not read, or a name given twice.
+std::vector<NamedValue> parse_design_points(const std::string& text, const std::string& entry);
+
+// The measuring points' heights along the garment (m from its bottom edge), in the order given:
+// a stated height as stated, a point without one (NaN) at its height in `landmark_heights` (the
+// points a garment cut to the body found on it, cases/limb_tube_cut.h). Throws
+// std::invalid_argument when a point has neither, or the heights do not increase or lie
+// outside [0, length_m].
 std::vector<NamedValue> design_point_heights(const std::vector<NamedValue>& stated_heights,
-                                             double length_m);
+                                             double length_m,
+                                             const std::vector<NamedValue>& landmark_heights = {});
 
 struct DesignTarget {
   enum class Kind { compression_class, pressures };

@@ -12,6 +12,7 @@ namespace tightfit {
 // Garments (Garment/Kind).
 PartEntry<GarmentMaker> tube_garment_entry();
 PartEntry<GarmentMaker> tapered_tube_garment_entry();
+PartEntry<GarmentMaker> limb_tube_garment_entry();
 PartEntry<GarmentMaker> sheet_garment_entry();
 PartEntry<GarmentMaker> pattern_file_garment_entry();
 

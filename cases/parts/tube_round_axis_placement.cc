@@ -19,8 +19,10 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_vector("Centre", "0,0,0", "Where the axis passes the middle of the tube (m).");
     prm.declare_text("Axis", "body",
-                     "Direction of the tube's axis, three numbers x,y,z (-), or 'body' for the "
-                     "body's own axis (a cone's or a cylinder's).");
+                     "Direction of the tube's axis, three numbers x,y,z (-), 'body' for the "
+                     "body's own axis (a cone's or a cylinder's), or 'garment' for the limb's "
+                     "axis a garment cut to the body was cut along (Garment/Kind = limb tube), "
+                     "the tube's middle then on it (Centre is not read).");
     prm.declare_double("Radius", 0.1, 0, ParameterTree::unbounded,
                        "Radius of the tube's circle at the start (m): larger than the body "
                        "wherever the tube lies, so that it shrinks onto it.");
@@ -43,12 +45,20 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
     if (!(radius_m > 0) && !(stretch > 0) && !(clearance_m > 0))
       throw std::invalid_argument("Radius must be positive (m)");
     std::optional<Vec3> axis;
-    if (axis_text != "body") {
+    const bool along_garment = axis_text == "garment";
+    if (axis_text != "body" && !along_garment) {
       axis = prm.get_vector("Axis");
       if (!(axis->norm() > 0)) throw std::invalid_argument("Axis must not be zero");
     }
     return [=](const Scenario& scenario) {
-      const std::optional<Vec3> direction = axis ? axis : scenario.body->axis();
+      if (along_garment && !scenario.garment_line)
+        throw std::invalid_argument(
+            "Placement/Tube round axis/Axis = garment, but the garment (Garment/Kind) is not cut "
+            "along a limb's axis: give a direction x,y,z and a Centre");
+      const std::optional<Vec3> direction = along_garment ? scenario.garment_line->axis
+                                            : axis        ? axis
+                                                          : scenario.body->axis();
+      const Vec3 middle = along_garment ? scenario.garment_line->centre_m : centre;
       if (!direction)
         throw std::invalid_argument("Placement/Tube round axis/Axis = body, but the body (" +
                                     scenario.body->describe() +
@@ -58,10 +68,10 @@ PartEntry<PlacementMaker> tube_round_axis_placement_entry() {
         TriangleSurface surface;
         surface.vertices_m = body.vertices_m;
         surface.triangles = body.triangles;
-        return place_tube_round_limb(scenario.garment, scenario.mesh, centre, *direction, surface,
+        return place_tube_round_limb(scenario.garment, scenario.mesh, middle, *direction, surface,
                                      clearance_m);
       }
-      return place_tube_round_axis(scenario.garment, scenario.mesh, centre, *direction, radius_m,
+      return place_tube_round_axis(scenario.garment, scenario.mesh, middle, *direction, radius_m,
                                    stretch);
     };
   };

@@ -136,6 +136,25 @@ TEST(Targets, RefuseWhatNoClassOrProfileMeans) {
   EXPECT_THROW(parse_named_values("B:0.02, C", "Points"), std::invalid_argument);
 }
 
+// Points without a height take the body's landmarks' (a limb tube's case); a stated height is
+// kept; a point with neither is refused, as is a name given twice.
+TEST(Targets, PointsTakeTheLandmarksHeightsWhereNoneIsStated) {
+  const std::vector<NamedValue> stated = parse_design_points("B, C:0.25, G", "Design/Points");
+  ASSERT_EQ(stated.size(), 3u);
+  EXPECT_TRUE(std::isnan(stated[0].value));
+  EXPECT_EQ(stated[1].value, 0.25);
+  const std::vector<NamedValue> landmarks = {{"B", 0.02}, {"C", 0.24}, {"G", 0.55}};
+  const std::vector<NamedValue> heights = design_point_heights(stated, 0.6, landmarks);
+  EXPECT_EQ(heights[0].value, 0.02);
+  EXPECT_EQ(heights[1].value, 0.25);  // stated: not the landmark's 0.24
+  EXPECT_EQ(heights[2].value, 0.55);
+  EXPECT_THROW(design_point_heights(stated, 0.6), std::invalid_argument);  // no landmarks
+  EXPECT_THROW(design_point_heights(parse_design_points("B, D", "P"), 0.6, landmarks),
+               std::invalid_argument);  // D not found on the body
+  EXPECT_THROW(parse_design_points("B, B:0.02", "P"), std::invalid_argument);
+  EXPECT_THROW(parse_design_points("B C", "P"), std::invalid_argument);
+}
+
 PiecewiseLinear limb() {
   // A limb whose girth rises 20 cm to 40 cm over 0.5 m, with a bump at 0.25.
   return PiecewiseLinear({{0.0, 0.20}, {0.25, 0.33}, {0.5, 0.40}}, "limb");
