@@ -108,12 +108,13 @@ double end_pressure_Pa(const testing::BodyCaseRun& r, const Vec3& direction, dou
 // p = T kappa with a uniform hoop tension T (frictionless, no axial load): the ratio of the
 // pressures at the ends of the major (y, 6 cm) and minor (z, 4 cm) axes is (a/b)^3 = 3.375.
 // Read as the mean over the vertices within 5 degrees of each axis (seen from the centre): the
-// curvature falls off the major axis's end quickly (to 0.93 of its peak at 5 degrees), so the
-// mean reads low; the exact curvature's mean over the same angular window is 3.29 times the
-// minor end's (kappa(t) = a b / (a^2 sin^2 t + b^2 cos^2 t)^(3/2), t the parameter; computed
-// below). Measured: mass spring 3.31 and FE 3.31 against that 3.29; the mesh's error (the tube's
-// 8 mm edges against the 2.7 cm radius of curvature at the major end) stated as 3%; the
-// backends within 1% of each other.
+// curvature falls off the major axis's end quickly, so the mean reads low; the exact
+// curvature's mean over the same angular window is 3.337 times the
+// minor end's (kappa(t) = a b / (b^2 sin^2 t + a^2 cos^2 t)^(3/2), t the parameter, a cos t
+// along the major axis; computed below: 3.337). Measured: mass spring 3.367 (+0.9%) and FE 3.348
+// (+0.3%); the mesh's error (the tube's 8 mm edges against the 2.7 cm radius of curvature at the
+// major end, the pressure read per vertex) stated as 3%, 3.3 times the larger; the backends
+// 0.56% apart, bound 1%.
 TEST(TubeOnEllipticMeshCylinder, PressureFollowsCurvatureOnBothBackends) {
   const double a = 0.06, b = 0.04;
   const std::string obj = elliptic_cylinder_obj("elliptic_cylinder.obj", b, a, Vec3::UnitX());
