@@ -7,7 +7,6 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <utility>
 
 namespace tightfit {
@@ -72,7 +71,6 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
       *problem.body, positions_m, ConstrainedDirections(pattern.constraints, pattern.n_vertices()),
       problem.friction_coefficient > 0.0);
   for (const RigidMotionPin::Pin& p : pin.pins) {
-    if (std::getenv("TF_NOPIN")) break;
     const int node = pattern.find_node(p.vertex);
     if (node >= 0) constrain_directions(pattern.carrier(node), p.directions, constraints);
   }

@@ -190,8 +190,10 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
            "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
            residual_N, failure_details(system, x, log));
     const double norm_0 = system.rhs.l2_norm();
-    const double energy_0_J =
-        energy_ && parameters_.line_search ? energy_(x) : std::numeric_limits<double>::quiet_NaN();
+    // The potential at x, evaluated when a trial point first needs it (most steps pass the
+    // residual's test and never do).
+    double energy_0_J = std::numeric_limits<double>::quiet_NaN();
+    bool energy_0_read = false;
     // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
     // or indefinite tangent, along which Newton's step may be huge or useless. When the line
     // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
@@ -266,7 +268,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       accepted = !parameters_.line_search;
       // The potential's slope along the increment, dPi/ds = R . increment = -rhs . increment
       // (rhs is zero on constrained rows), read before the trial assemblies overwrite rhs.
-      const double slope_J = parameters_.line_search && std::isfinite(energy_0_J)
+      const double slope_J = parameters_.line_search && energy_
                                  ? -owned_dot(system, increment)
                                  : std::numeric_limits<double>::quiet_NaN();
       for (int halving = 0; parameters_.line_search; ++halving) {
@@ -282,9 +284,11 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         assemble(trial, tangent_current);
         const double norm = system.rhs.l2_norm();
         const bool residual_decreases = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
-        const bool energy_decreases = slope_J < 0.0 && std::isfinite(norm) &&
-                                      energy_(trial) <= energy_0_J + 1e-4 * s * slope_J;
-        accepted = residual_decreases || energy_decreases;
+        accepted = residual_decreases;
+        if (!accepted && slope_J < 0.0 && std::isfinite(norm)) {
+          if (!energy_0_read) energy_0_J = energy_(x), energy_0_read = true;
+          accepted = energy_(trial) <= energy_0_J + 1e-4 * s * slope_J;
+        }
         if (accepted || halving >= parameters_.max_line_search_halvings) break;
         s *= 0.5;
       }

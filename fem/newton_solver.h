@@ -116,9 +116,9 @@ class NewtonSolver {
   // Whether the line search cut the last iteration's step (its next step is then solved on the
   // contact set it predicts, see solve()).
   bool step_cut_ = false;
-  // Prediction rounds of a step after a cut one: 5 took the tubes on mesh bodies through in
-  // 12 to 14 iterations where the contact set at x took them nowhere (docs/performance.md).
-  static constexpr int kPredictionRoundsAfterCut = 5;
+  // Prediction rounds of a step after a cut one: 1 took the tubes on mesh bodies through in
+  // 11 to 23 iterations where the contact set at x took them nowhere (docs/performance.md).
+  static constexpr int kPredictionRoundsAfterCut = 1;
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;
 };
