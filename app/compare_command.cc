@@ -1,5 +1,6 @@
 #include "app/compare_command.h"
 
+#include "app/region_comparison.h"
 #include "app/run_command.h"
 #include "app/summary_table.h"
 #include "cases/case_parameters.h"
@@ -43,6 +44,10 @@ int compare_command(const CommandLine& cl, std::ostream& out) {
   out << "\n"
       << table << "  results in " << dir << "/ (compare.csv, " << first << "/, " << second
       << "/, difference.pvd)\n";
+  // Both runs from the same start: the regions side by side (when the case lists them).
+  if (const std::optional<TextTable> regions = region_comparison(
+          dir + "/" + first + "/regions.csv", first, dir + "/" + second + "/regions.csv", second))
+    out << "\n" << *regions;
   for (const RunResult* r : {&result.first, &result.second})
     if (!r->completed) out << "  " << r->backend << " stopped early: " << r->failure << "\n";
   return result.completed() ? 0 : 1;

@@ -94,10 +94,9 @@ class FemBackend::Implementation {
                                 problem.law->stiffness_scale()),
                 problem.body, comm_),
         contact_(pattern_, problem_, parameters) {
-    if (parameters.max_contact_set_predictions > 0)
-      newton_.set_contact_set_predictor([this](const DofVector& x, const DofVector* increment) {
-        return contact_.predict_contact_set(x, increment);
-      });
+    newton_.set_contact_set_predictor([this](const DofVector& x, const DofVector* increment) {
+      return contact_.predict_contact_set(x, increment);
+    });
     // Start flat in the layout plane until the caller places the garment.
     set_positions(layout_start_on_every_rank(problem.mesh, pattern_.n_vertices(), comm_));
   }
@@ -143,7 +142,11 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
                        step.gravity_on, system_);
   };
+  newton_.set_energy([this, &step](const DofVector& x) {
+    return assembly_.energy_J(x, contact_.nodes(), step.gravity_on);
+  });
   contact_.solve(step, newton_, assemble, system_, x_, log, report);
+  newton_.set_energy({});
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
   output_ = OwnedSurfaceOutput(
       pattern_, surface_output(pattern_, assembly_, *problem_.body, x_,

@@ -117,9 +117,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "the step says, and with friction sticking or slipping as the linearised "
                     "offset from its anchor and normal force say, until the sides the step was "
                     "solved on are those it predicts (a primal-dual active-set step; "
-                    "fem/contact_set_prediction.h). 0: "
-                    "every step on the nodes in contact where it starts, so that nodes reaching "
-                    "the body meet no penalty in the step and the line search shortens it.");
+                    "fem/contact_set_prediction.h). 0: a step is solved again on its predicted "
+                    "set only after a step the line search cut (once), every other step on the "
+                    "nodes in contact where it starts (docs/backends.md, \"Newton's line "
+                    "search\").");
   prm.declare_entry(
       "Penalty factor", "100", Double(1e-3, 1e12),
       "Contact penalty k = beta Y / h_k^2 in Pa/m at each node (Y the law's stiffness "

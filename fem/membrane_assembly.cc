@@ -1,10 +1,13 @@
 #include "fem/membrane_assembly.h"
 
+#include "contact/penalty_contact.h"
 #include "fem/contact_set_prediction.h"
 #include "fem/membrane_kernel.h"
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace tightfit {
@@ -113,6 +116,42 @@ void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
   }
   if (with_tangent) system.tangent.compress(dealii::VectorOperation::add);
   system.rhs.compress(dealii::VectorOperation::add);
+}
+
+double MembraneAssembly::energy_J(const DofVector& x, const ContactNodes& contact,
+                                  bool gravity_on) const {
+  const bool predicted =
+      std::any_of(contact.predicted.begin(), contact.predicted.end(),
+                  [](const PredictedSide& side) { return !side.same_branches(PredictedSide()); });
+  if (contact.friction.active() || predicted) return std::numeric_limits<double>::quiet_NaN();
+  const Vec3 weight = gravity_on ? weight_per_rest_area() : Vec3::Zero();
+  const unsigned int n_element_nodes = pattern_.n_element_nodes();
+  double energy = 0.0;
+  std::vector<Vec2> grad_grain(n_element_nodes);
+  for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
+    const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs[cell];
+    for (unsigned int q = 0; q < pattern_.cell_JxW_m2[cell].size(); ++q) {
+      std::copy_n(pattern_.cell_grad_grain[cell].begin() + q * n_element_nodes, n_element_nodes,
+                  grad_grain.begin());
+      Mat32 F = Mat32::Zero();
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        F.row(pattern_.local_component[i]) +=
+            x(dofs[i]) * grad_grain[pattern_.local_node[i]].transpose();
+      energy += pattern_.cell_JxW_m2[cell][q] * problem_.law->energy(F.transpose() * F);
+    }
+    // The weight's work, as the right-hand side's load (assemble()).
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      energy -= pattern_.cell_node_rest_area_m2[cell][pattern_.local_node[i]] *
+                weight[pattern_.local_component[i]] * x(dofs[i]);
+  }
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes[k]);
+    const double kA = contact.penalty_N_per_m[k];
+    const double lambda = contact_multiplier_N(
+        contact.multiplier_N[k], kA, contact.query(*problem_.body, k, p).signed_distance_m);
+    energy += lambda * lambda / (2.0 * kA);
+  }
+  return dealii::Utilities::MPI::sum(energy, comm_);
 }
 
 std::vector<Vec3> MembraneAssembly::internal_force_N(const DofVector& x) const {

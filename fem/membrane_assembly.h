@@ -26,6 +26,13 @@ class MembraneAssembly {
   void assemble(const DofVector& x, const ContactNodes& contact, double tangent_shift_N_per_m,
                 bool with_tangent, bool gravity_on, NewtonSystem& system) const;
 
+  // The potential whose gradient is R(x) for frictionless contact (docs/backends.md, "Newton's
+  // line search"), J, summed over every rank: the membrane's strain energy, the contact's
+  // max(0, lambda_bar - kA g)^2 / (2 kA) at each node (contact/nodal_contact.h) and, with
+  // gravity_on, minus the weight's work. NaN when friction is on or a contact set is predicted:
+  // then R is no potential's gradient.
+  double energy_J(const DofVector& x, const ContactNodes& contact, bool gravity_on) const;
+
   // The garment's weight as consistent nodal loads, per node, N:
   //   f_k = g int N_k rho_A dA_rest,
   // rho_A the fabric's areal density over the rest area (mass is conserved, so no current

@@ -134,6 +134,12 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
   }
 }
 
+double NewtonSolver::owned_dot(const NewtonSystem& system, const DofVector& increment) const {
+  double sum = 0.0;
+  for (const GlobalDof i : pattern_.owned_dofs) sum += system.rhs(i) * increment(i);
+  return dealii::Utilities::MPI::sum(sum, comm_);
+}
+
 void NewtonSolver::ghosted_increment(NewtonSystem& system, DofVector& increment) const {
   // The seam copies and constrained directions of this rank's DoFs take their values from the
   // DoFs they follow (other ranks' among them fetched by deal.II); the solver zeroes the vector
@@ -184,6 +190,10 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
            "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
            residual_N, failure_details(system, x, log));
     const double norm_0 = system.rhs.l2_norm();
+    // The potential at x, evaluated when a trial point first needs it (most steps pass the
+    // residual's test and never do).
+    double energy_0_J = std::numeric_limits<double>::quiet_NaN();
+    bool energy_0_read = false;
     // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
     // or indefinite tangent, along which Newton's step may be huge or useless. When the line
     // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
@@ -191,11 +201,19 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // untouched, so the converged state is not biased.
     DofVector trial(x), increment;
     bool tangent_current = false;
-    double step_taken = 0.0;
+    double step_taken = 0.0, full_step = 0.0;
     // A step on the predicted contact set whose line search fails is tried again on the set at
     // x, with the same shift, before the shift grows: the prediction is the linearised step's,
     // and a step that ends far from it (a facet crossed, a turned normal) may not descend.
-    bool predict = static_cast<bool>(predictor_), predicted = false, reassemble = false;
+    // Predictions are made every iteration when 'Contact set predictions' asks, and otherwise
+    // only after an iteration whose full step the line search cut: there the contact set at x
+    // was the wrong one to linearise on (nodes the step drives into the body meet no penalty in
+    // it), and re-solving on the set the step reaches is what lets the next step be taken
+    // whole (docs/backends.md, "Newton's line search").
+    const int prediction_rounds =
+        step_cut_ ? std::max(parameters_.max_contact_set_predictions, kPredictionRoundsAfterCut)
+                  : parameters_.max_contact_set_predictions;
+    bool predict = predictor_ && prediction_rounds > 0, predicted = false, reassemble = false;
     // How often the shift has grown in this iteration (after a failed solve or line search).
     int escalations = 0;
     bool accepted = false;
@@ -219,9 +237,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         // R(x): the assembly at x is redone, on every node's own side, before it is read again.
         predicted = false;
         if (predict) {
-          for (int round = 0;
-               round < parameters_.max_contact_set_predictions && predictor_(x, &increment) > 0;
-               ++round) {
+          for (int round = 0; round < prediction_rounds && predictor_(x, &increment) > 0; ++round) {
             assemble(x, true);
             if (shift_N_per_m > 0.0) MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
             log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
@@ -247,17 +263,32 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       // A step longer than half an edge leaves the region where the linearisation holds (and
       // may carry the garment, which has no bending stiffness, into a folded state): shorten
       // it.
-      step_taken = std::min(1.0, 0.5 * mean_edge_m / increment.linfty_norm());
+      step_taken = full_step = std::min(1.0, 0.5 * mean_edge_m / increment.linfty_norm());
       double& s = step_taken;  // halved by the line search
       accepted = !parameters_.line_search;
+      // The potential's slope along the increment, dPi/ds = R . increment = -rhs . increment
+      // (rhs is zero on constrained rows), read before the trial assemblies overwrite rhs.
+      const double slope_J = parameters_.line_search && energy_
+                                 ? -owned_dot(system, increment)
+                                 : std::numeric_limits<double>::quiet_NaN();
       for (int halving = 0; parameters_.line_search; ++halving) {
         trial = x;
         trial.add(s, increment);
-        // Armijo's sufficient decrease (1e-4 s) of ||R||_2.
+        // Armijo's sufficient decrease (1e-4 s) of the potential Pi along a descent direction,
+        // or of ||R||_2 (docs/backends.md, "Newton's line search"). Pi alone admits the steps
+        // that cross a valley of ||R|| (a slack tube settling, a tube on an elliptic section:
+        // ||R|| alone stalled there); ||R|| alone decides where Pi has none (friction, a
+        // predicted contact set) and near the solution, where Pi's decrease falls below its
+        // round-off.
         tangent_current = halving == 0;
         assemble(trial, tangent_current);
         const double norm = system.rhs.l2_norm();
-        accepted = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
+        const bool residual_decreases = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
+        accepted = residual_decreases;
+        if (!accepted && slope_J < 0.0 && std::isfinite(norm)) {
+          if (!energy_0_read) energy_0_J = energy_(x), energy_0_read = true;
+          accepted = energy_(trial) <= energy_0_J + 1e-4 * s * slope_J;
+        }
         if (accepted || halving >= parameters_.max_line_search_halvings) break;
         s *= 0.5;
       }
@@ -287,6 +318,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // Every shift refused: the shortest step tried is taken, and counted as a failed line
     // search (StepReport's newton.n_failed_line_searches); the iteration limit judges.
     if (!accepted) ++log.n_failed_line_searches;
+    step_cut_ = parameters_.line_search && step_taken < full_step;
     x = trial;
     log.step_length.push_back(step_taken);
     if (!tangent_current) assemble(x, true);

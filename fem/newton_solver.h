@@ -39,6 +39,8 @@ class NewtonSolver {
  public:
   // Fills system.rhs = -R(x) (constrained), and system.tangent = dR/dx when asked.
   using Assembler = std::function<void(const DofVector& x, bool with_tangent)>;
+  // The potential whose gradient is R (MembraneAssembly::energy_J), J; NaN where there is none.
+  using Energy = std::function<double(const DofVector& x)>;
   // Given x and Newton's increment, sets the contact set the next assembly takes for the step's
   // model and returns how many nodes changed side (fem/contact_set_prediction.h); given a null
   // increment, returns every node to its own side at the point assembled.
@@ -57,7 +59,10 @@ class NewtonSolver {
 
   double tolerance_N() const { return tolerance_N_; }
   // Forgets the tangent's shift of earlier steps (call at the start of a load step).
-  void start_step() { shift_N_per_m_ = 0.0; }
+  void start_step() {
+    shift_N_per_m_ = 0.0;
+    step_cut_ = false;
+  }
   // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
   void pattern_changed() { linear_solver_->reset(); }
   PetscLinearSolver& linear_solver() { return *linear_solver_; }
@@ -65,6 +70,9 @@ class NewtonSolver {
   void set_contact_set_predictor(ContactSetPredictor predictor) {
     predictor_ = std::move(predictor);
   }
+
+  // The line search's first merit (see solve()); without it, ||R||_2 alone.
+  void set_energy(Energy energy) { energy_ = std::move(energy); }
 
   // Iterates from x until max |R| <= tolerance_N(); returns the iterations taken. Throws
   // SolverError (throw_step_failure) on a non-finite residual or too many iterations.
@@ -83,6 +91,8 @@ class NewtonSolver {
   // direct).
   int solve_linear_system(const LoadStep& step, const DofVector& x, NewtonSystem& system,
                           NewtonLog& log);
+  // rhs . increment over every rank.
+  double owned_dot(const NewtonSystem& system, const DofVector& increment) const;
   // The increment on this rank's DoFs and ghosts, constraints distributed.
   void ghosted_increment(NewtonSystem& system, DofVector& increment) const;
   [[noreturn]] void fail(StopReason reason, const LoadStep& step, const std::string& what,
@@ -96,12 +106,19 @@ class NewtonSolver {
   MPI_Comm comm_;
   std::unique_ptr<PetscLinearSolver> linear_solver_;
   ContactSetPredictor predictor_;
+  Energy energy_;
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
   // Per DoF this rank owns (in the order of pattern.owned_dofs), h / h_k of the node it belongs
   // to (every copy of a seam node alike).
   std::vector<double> dof_weight_;
+  // Whether the line search cut the last iteration's step (its next step is then solved on the
+  // contact set it predicts, see solve()).
+  bool step_cut_ = false;
+  // Prediction rounds of a step after a cut one: 1 took the tubes on mesh bodies through in
+  // 11 to 23 iterations where the contact set at x took them nowhere (docs/performance.md).
+  static constexpr int kPredictionRoundsAfterCut = 1;
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;
 };

@@ -67,8 +67,8 @@ TEST(BodyRegions, BadDefinitionsSayWhatAndWhere) {
   EXPECT_NE(message("slab z 0 1").find("expected 'NAME: SHAPE"), std::string::npos);
 }
 
-// Regions named by anatomy (docs/measuring-bodies.md, "Named regions"): parsed as requests, refused if
-// used before the body resolves them, then built on MakeHuman's default female from her
+// Regions named by anatomy (docs/measuring-bodies.md, "Named regions"): parsed as requests, refused
+// if used before the body resolves them, then built on MakeHuman's default female from her
 // landmarks (body/body_measurements.h).
 TEST(BodyRegions, NamedShapesAreBuiltFromTheBodysLandmarks) {
   std::vector<BodyRegion> regions =
