@@ -9,10 +9,12 @@
 #include "cases/scenario.h"
 #include "contact/mesh_import.h"
 #include "contact/polygon_mesh.h"
+#include "io/vtu_writer.h"
 #include "massspring/dressing.h"
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -40,6 +42,28 @@ TriangleSurface surface_of(const RigidBody& body) {
   return surface;
 }
 
+// The state a failed dressing stopped in, as two files in `directory` for ParaView: the panels
+// (dressing_failed.vtu: seam gap and distance to the body per vertex) and the body at the
+// scale it had then (dressing_failed_body.vtu). Returns the sentence the error message ends in.
+std::string write_failed_dressing(const std::string& directory, const DressingSnapshot& s) {
+  namespace fs = std::filesystem;
+  try {
+    fs::create_directories(directory);
+    SurfaceVtu panels(s.positions_m, s.triangles);
+    panels.add_point_scalar("seam gap", s.seam_gap_m);
+    panels.add_point_scalar("distance to body", s.body_distance_m);
+    panels.add_field_scalar("frame", s.frame);
+    panels.add_field_scalar("body scale", s.body_scale);
+    const std::string garment_file = (fs::path(directory) / "dressing_failed.vtu").string();
+    panels.write(garment_file);
+    const std::string body_file = (fs::path(directory) / "dressing_failed_body.vtu").string();
+    SurfaceVtu(s.body.vertices_m, s.body.triangles).write(body_file);
+    return "the state it stopped in is in " + garment_file + " and " + body_file;
+  } catch (const std::exception& error) {
+    return std::string("the state it stopped in could not be written: ") + error.what();
+  }
+}
+
 }  // namespace
 
 PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
@@ -62,6 +86,9 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
                           "The reference body file's up direction.");
     prm.declare_double("Reference body unit scale", 1, 1e-6, 1e6,
                        "Metres per unit of the reference body file (0.01 for centimetres).");
+    prm.declare_double("Lift", 0, -1, 1,
+                       "The arrangement moved up by this after the fit (m): for a file drafted "
+                       "round a body that is not given as Reference body.");
     prm.declare_double("Start scale", 0.6, 0.05, 1,
                        "The body's scale about its skeleton at the start of the dressing (-): "
                        "each part's distance from its own axis times this.");
@@ -92,6 +119,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       options.metres_per_unit = prm.get_double("Reference body unit scale");
       reference = import_surface(read_polygon_mesh(file), options);
     }
+    const double lift_m = prm.get_double("Lift");
     const double blend_m = prm.get_double("Skeleton blend");
     const double arm_raise_rad = prm.get_double("Arm raise") * M_PI / 180.0;
     const bool shorten_torso = prm.get_bool("Shorten torso");
@@ -102,9 +130,10 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     settings.progress = &std::cout;
     return [=](const Scenario& scenario) {
       const BodyMeasurements body = measured(surface_of(scenario.body->body()), "case's body");
-      const ArrangementFit fit =
+      ArrangementFit fit =
           reference ? fit_arrangement(frame, measured(*reference, "reference body"), body)
                     : unfitted_arrangement(frame);
+      fit.body_origin_m.z() += lift_m;
       std::printf(
           "  arrangement: the pattern's torso moved onto the body's at (%.3f, %.3f, %.3f) m, "
           "scaled %.3f across and %.3f along\n",
@@ -115,6 +144,12 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       dressing.skeleton_blend_m = blend_m;
       dressing.skeleton_arm_raise_rad = arm_raise_rad;
       dressing.skeleton_shortens_torso = shorten_torso;
+      const std::string directory = scenario.parameters.output.directory;
+      const bool writes = scenario.parameters.output.rank == 0;  // one file for all MPI ranks
+      dressing.on_failure = [directory, writes](const DressingSnapshot& s) {
+        return writes ? write_failed_dressing(directory, s)
+                      : std::string("rank 0 writes its state");
+      };
       std::vector<Vec3> start;
       try {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);
