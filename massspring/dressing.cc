@@ -72,10 +72,14 @@ DressingSnapshot snapshot(const OpenSeamGarment& open, const ShrinkingBody& body
   s.positions_m = open.positions();
   s.triangles = open.panels().mesh.triangles;
   s.seam_gap_m.assign(s.positions_m.size(), 0.0);
+  s.seam_partner.assign(s.positions_m.size(), -1);
   for (const auto& [a, b] : open.panels().seam_pairs) {
     const double gap = (s.positions_m[a] - s.positions_m[b]).norm();
-    s.seam_gap_m[a] = std::max(s.seam_gap_m[a], gap);
-    s.seam_gap_m[b] = std::max(s.seam_gap_m[b], gap);
+    for (const auto& [u, w] : {std::pair<int, int>{a, b}, {b, a}})
+      if (s.seam_partner[u] < 0 || gap > s.seam_gap_m[u]) {
+        s.seam_gap_m[u] = gap;
+        s.seam_partner[u] = w;
+      }
   }
   s.body_distance_m.reserve(s.positions_m.size());
   for (const Vec3& x : s.positions_m) s.body_distance_m.push_back(body.query(x).signed_distance_m);

@@ -31,6 +31,7 @@ struct DressingSnapshot {
   // Per panel vertex: the distance to its seam partner (the widest when it has several; 0 on
   // no seam), and its signed distance to the body at body_scale (negative inside), m.
   std::vector<double> seam_gap_m;
+  std::vector<int> seam_partner;  // the vertex at that widest gap, -1 on no seam
   std::vector<double> body_distance_m;
   DisplayMesh body;  // the body at body_scale
 };

@@ -5,16 +5,15 @@
 // from a start shrunk about its skeleton, each part about its own axis (docs/dressing.md
 // "Arrangement from the pattern file").
 #include "body/garment_arrangement.h"
+#include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
 #include "contact/mesh_import.h"
 #include "contact/polygon_mesh.h"
-#include "io/vtu_writer.h"
 #include "massspring/dressing.h"
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -40,28 +39,6 @@ TriangleSurface surface_of(const RigidBody& body) {
   surface.vertices_m = mesh.vertices_m;
   surface.triangles = mesh.triangles;
   return surface;
-}
-
-// The state a failed dressing stopped in, as two files in `directory` for ParaView: the panels
-// (dressing_failed.vtu: seam gap and distance to the body per vertex) and the body at the
-// scale it had then (dressing_failed_body.vtu). Returns the sentence the error message ends in.
-std::string write_failed_dressing(const std::string& directory, const DressingSnapshot& s) {
-  namespace fs = std::filesystem;
-  try {
-    fs::create_directories(directory);
-    SurfaceVtu panels(s.positions_m, s.triangles);
-    panels.add_point_scalar("seam gap", s.seam_gap_m);
-    panels.add_point_scalar("distance to body", s.body_distance_m);
-    panels.add_field_scalar("frame", s.frame);
-    panels.add_field_scalar("body scale", s.body_scale);
-    const std::string garment_file = (fs::path(directory) / "dressing_failed.vtu").string();
-    panels.write(garment_file);
-    const std::string body_file = (fs::path(directory) / "dressing_failed_body.vtu").string();
-    SurfaceVtu(s.body.vertices_m, s.body.triangles).write(body_file);
-    return "the state it stopped in is in " + garment_file + " and " + body_file;
-  } catch (const std::exception& error) {
-    return std::string("the state it stopped in could not be written: ") + error.what();
-  }
 }
 
 }  // namespace
@@ -144,12 +121,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       dressing.skeleton_blend_m = blend_m;
       dressing.skeleton_arm_raise_rad = arm_raise_rad;
       dressing.skeleton_shortens_torso = shorten_torso;
-      const std::string directory = scenario.parameters.output.directory;
-      const bool writes = scenario.parameters.output.rank == 0;  // one file for all MPI ranks
-      dressing.on_failure = [directory, writes](const DressingSnapshot& s) {
-        return writes ? write_failed_dressing(directory, s)
-                      : std::string("rank 0 writes its state");
-      };
+      write_failed_dressing_to(scenario.parameters.output, dressing);
       std::vector<Vec3> start;
       try {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);
