@@ -154,14 +154,19 @@ TEST(Dressing, DressedTubeWornWithGravityAndFrictionCarriesItsWeight) {
   EXPECT_NEAR(carried_N.y(), 0.0, 1e-3 * weight_N);
 }
 
+// The tube round the cylinder at alpha 3, whose seams cannot close (below), in 1500 frames.
+CaseParameters too_small_for_the_body() {
+  CaseFile file;
+  dressing_case(file, 0.14, {"Placement/Dressing/Maximum frames=1500", "Protocol/Final alpha=3.5"});
+  testing::start_cylinder_at(file, 3.0, rest_radius_45T_m);
+  return file.parameters();
+}
+
 TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
   // The cylinder at alpha 3 (18 cm): round it the tube stretches by 200 %, where a seam spring
   // of 20 x the stiffness scale balances the hoop tension at a gap of about 2 / 20 of a vertex's
   // seam length, twice the closing gap (0.05 of an edge): the seams cannot close.
-  CaseFile file;
-  dressing_case(file, 0.14, {"Placement/Dressing/Maximum frames=1500", "Protocol/Final alpha=3.5"});
-  testing::start_cylinder_at(file, 3.0, rest_radius_45T_m);
-  CaseParameters parameters = file.parameters();
+  CaseParameters parameters = too_small_for_the_body();
   parameters.output.write_files = false;
   try {
     make_scenario(parameters);
@@ -182,10 +187,7 @@ TEST(Dressing, AFailedDressingWritesTheStateItStoppedIn) {
   // (the cylinder's own points, so to rounding: 1e-9 relative); the panels in the first lie
   // pressed on that cylinder, none more than 1 mm inside it (measured 0.12 mm, the penalty's
   // depth p / k).
-  CaseFile file;
-  dressing_case(file, 0.14, {"Placement/Dressing/Maximum frames=1500", "Protocol/Final alpha=3.5"});
-  testing::start_cylinder_at(file, 3.0, rest_radius_45T_m);
-  CaseParameters parameters = file.parameters();
+  CaseParameters parameters = too_small_for_the_body();
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "tightfit_test_failed_dressing";
   std::filesystem::remove_all(dir);
