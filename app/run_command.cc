@@ -34,6 +34,9 @@ int run_command(const CommandLine& cl, std::ostream& out) {
     files.back()->read(path, cl.overrides);
     CaseParameters parameters = files.back()->parameters();
     share_output_by_rank(cl, parameters.output);
+    // Where the run writes, known before the scenario is made: a dressing that fails writes
+    // the state it stopped in there.
+    parameters.output.directory = output_directory_for(cl, path, parameters.output.directory);
     try {
       setups.push_back(make_scenario(parameters));
     } catch (const SolverError& e) {

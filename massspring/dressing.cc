@@ -65,6 +65,28 @@ std::unique_ptr<ShrinkingBody> shrinking_body(const RigidBody& whole,
   return std::make_unique<ScaledBody>(whole, settings.centre_m);
 }
 
+DressingSnapshot snapshot(const OpenSeamGarment& open, const ShrinkingBody& body, int frame) {
+  DressingSnapshot s;
+  s.frame = frame;
+  s.body_scale = body.scale();
+  s.positions_m = open.positions();
+  s.triangles = open.panels().mesh.triangles;
+  s.seam_gap_m.assign(s.positions_m.size(), 0.0);
+  s.seam_partner.assign(s.positions_m.size(), -1);
+  for (const auto& [a, b] : open.panels().seam_pairs) {
+    const double gap = (s.positions_m[a] - s.positions_m[b]).norm();
+    for (const auto& [u, w] : {std::pair<int, int>{a, b}, {b, a}})
+      if (s.seam_partner[u] < 0 || gap > s.seam_gap_m[u]) {
+        s.seam_gap_m[u] = gap;
+        s.seam_partner[u] = w;
+      }
+  }
+  s.body_distance_m.reserve(s.positions_m.size());
+  for (const Vec3& x : s.positions_m) s.body_distance_m.push_back(body.query(x).signed_distance_m);
+  s.body = body.display_mesh();
+  return s;
+}
+
 }  // namespace
 
 std::string seam_joining(const Garment& garment, const SimulationMesh& mesh, int a, int b) {
@@ -149,6 +171,8 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     if (a >= 0)
       message << ", on seam " << seam_joining(garment, welded, a, b) << " between " << where(x[a])
               << " and " << where(x[b]);
+    if (settings.on_failure)
+      message << "; " << settings.on_failure(snapshot(open, body, result.frames));
     return SolverError(reason, message.str());
   };
 

@@ -10,14 +10,31 @@
 
 #include "contact/skeleton_shrink.h"
 #include "core/backend.h"
+#include "core/pressure_field.h"
 #include "massspring/massspring_parameters.h"
 
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace tightfit {
+
+// The state a dressing stopped in when it fails (seams not closed, diverged, ran away): what a
+// picture needs to show which part of the body holds a seam open.
+struct DressingSnapshot {
+  int frame = 0;
+  double body_scale = 1.0;
+  std::vector<Vec3> positions_m;    // every panel vertex (unwelded), numbered as problem.mesh's
+  std::vector<Triangle> triangles;  // the panels' triangles on those vertices
+  // Per panel vertex: the distance to its seam partner (the widest when it has several; 0 on
+  // no seam), and its signed distance to the body at body_scale (negative inside), m.
+  std::vector<double> seam_gap_m;
+  std::vector<int> seam_partner;  // the vertex at that widest gap, -1 on no seam
+  std::vector<double> body_distance_m;
+  DisplayMesh body;  // the body at body_scale
+};
 
 struct DressingSettings {
   Vec3 centre_m = Vec3::Zero();  // the point the body is scaled about, or a point on the axis
@@ -48,6 +65,9 @@ struct DressingSettings {
   // If given, a line every this many frames: frame, body scale, seam ramp, widest gap.
   std::ostream* progress = nullptr;
   int progress_frames = 1000;
+  // If given, called with the state the dressing stopped in before it throws SolverError; the
+  // text it returns (say, where it wrote that state) is added to the error's message.
+  std::function<std::string(const DressingSnapshot&)> on_failure;
 };
 
 struct DressingResult {

@@ -5,6 +5,7 @@
 // to an ease stated against one of the body's girths (docs/dressing.md).
 #include "body/body_measurements.h"
 #include "cases/coarse_dressing.h"
+#include "cases/failed_dressing_output.h"
 #include "cases/garment_arrangement.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
@@ -101,6 +102,7 @@ PlacementMaker arrange(const ArrangementSettings& a, std::optional<double> fixed
     DressingSettings settings = a.dressing;
     settings.centre_m = plan.wrap.centre_m;
     settings.scale_axis = plan.wrap.axis;
+    write_failed_dressing_to(s.parameters.output, settings);
     const std::vector<Vec3> open = wrap_panels_round_axis(s.garment, s.mesh, plan.wrap);
     try {
       const DressingResult dressed = dress(s.problem, s.garment, open, settings);

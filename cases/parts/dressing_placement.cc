@@ -4,6 +4,7 @@
 // start to its shape; the welded garment is the start of the load steps, on either backend
 // (docs/dressing.md).
 #include "cases/coarse_dressing.h"
+#include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
 #include "contact/panel_wrap.h"
@@ -171,7 +172,9 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
       const std::vector<Vec3> open =
           wrap_panels_round_axis(scenario.garment, scenario.mesh, placed);
       try {
-        const DressingResult dressed = dress(scenario.problem, scenario.garment, open, settings);
+        DressingSettings writing = settings;
+        write_failed_dressing_to(scenario.parameters.output, writing);
+        const DressingResult dressed = dress(scenario.problem, scenario.garment, open, writing);
         print_dressing(dressed);
         return dressed.welded_positions_m;
       } catch (const std::invalid_argument& error) {

@@ -5,6 +5,7 @@
 // from a start shrunk about its skeleton, each part about its own axis (docs/dressing.md
 // "Arrangement from the pattern file").
 #include "body/garment_arrangement.h"
+#include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
 #include "contact/mesh_import.h"
@@ -62,6 +63,9 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
                           "The reference body file's up direction.");
     prm.declare_double("Reference body unit scale", 1, 1e-6, 1e6,
                        "Metres per unit of the reference body file (0.01 for centimetres).");
+    prm.declare_double("Lift", 0, -1, 1,
+                       "The arrangement moved up by this after the fit (m): for a file drafted "
+                       "round a body that is not given as Reference body.");
     prm.declare_double("Start scale", 0.6, 0.05, 1,
                        "The body's scale about its skeleton at the start of the dressing (-): "
                        "each part's distance from its own axis times this.");
@@ -92,6 +96,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       options.metres_per_unit = prm.get_double("Reference body unit scale");
       reference = import_surface(read_polygon_mesh(file), options);
     }
+    const double lift_m = prm.get_double("Lift");
     const double blend_m = prm.get_double("Skeleton blend");
     const double arm_raise_rad = prm.get_double("Arm raise") * M_PI / 180.0;
     const bool shorten_torso = prm.get_bool("Shorten torso");
@@ -102,9 +107,10 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     settings.progress = &std::cout;
     return [=](const Scenario& scenario) {
       const BodyMeasurements body = measured(surface_of(scenario.body->body()), "case's body");
-      const ArrangementFit fit =
+      ArrangementFit fit =
           reference ? fit_arrangement(frame, measured(*reference, "reference body"), body)
                     : unfitted_arrangement(frame);
+      fit.body_origin_m.z() += lift_m;
       std::printf(
           "  arrangement: the pattern's torso moved onto the body's at (%.3f, %.3f, %.3f) m, "
           "scaled %.3f across and %.3f along\n",
@@ -115,6 +121,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       dressing.skeleton_blend_m = blend_m;
       dressing.skeleton_arm_raise_rad = arm_raise_rad;
       dressing.skeleton_shortens_torso = shorten_torso;
+      write_failed_dressing_to(scenario.parameters.output, dressing);
       std::vector<Vec3> start;
       try {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);

@@ -11,6 +11,7 @@
 #include "contact/cylinder.h"
 #include "contact/scaled_body.h"
 #include "cylinder_start.h"
+#include "io/triangle_vtu_reader.h"
 #include "massspring/seam_springs.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <random>
 #include <sstream>
 #include <string>
@@ -152,14 +154,19 @@ TEST(Dressing, DressedTubeWornWithGravityAndFrictionCarriesItsWeight) {
   EXPECT_NEAR(carried_N.y(), 0.0, 1e-3 * weight_N);
 }
 
+// The tube round the cylinder at alpha 3, whose seams cannot close (below), in 1500 frames.
+CaseParameters too_small_for_the_body() {
+  CaseFile file;
+  dressing_case(file, 0.14, {"Placement/Dressing/Maximum frames=1500", "Protocol/Final alpha=3.5"});
+  testing::start_cylinder_at(file, 3.0, rest_radius_45T_m);
+  return file.parameters();
+}
+
 TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
   // The cylinder at alpha 3 (18 cm): round it the tube stretches by 200 %, where a seam spring
   // of 20 x the stiffness scale balances the hoop tension at a gap of about 2 / 20 of a vertex's
   // seam length, twice the closing gap (0.05 of an edge): the seams cannot close.
-  CaseFile file;
-  dressing_case(file, 0.14, {"Placement/Dressing/Maximum frames=1500", "Protocol/Final alpha=3.5"});
-  testing::start_cylinder_at(file, 3.0, rest_radius_45T_m);
-  CaseParameters parameters = file.parameters();
+  CaseParameters parameters = too_small_for_the_body();
   parameters.output.write_files = false;
   try {
     make_scenario(parameters);
@@ -171,6 +178,47 @@ TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
     EXPECT_NE(message.find("on seam 4 5T"), std::string::npos) << message;
     EXPECT_NE(message.find("widest seam gap"), std::string::npos) << message;
   }
+}
+
+TEST(Dressing, AFailedDressingWritesTheStateItStoppedIn) {
+  // The garment too small for its body above, with files written: the error names the two VTU
+  // files; the body in the second is the cylinder at the scale the dressing stopped at (1: the
+  // growth frames are over), every point at most alpha R0 from the axis and the farthest at it
+  // (the cylinder's own points, so to rounding: 1e-9 relative); the panels in the first lie
+  // pressed on that cylinder, none more than 1 mm inside it (measured 0.12 mm, the penalty's
+  // depth p / k).
+  CaseParameters parameters = too_small_for_the_body();
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "tightfit_test_failed_dressing";
+  std::filesystem::remove_all(dir);
+  parameters.output.directory = dir.string();
+  parameters.output.write_files = true;
+  try {
+    make_scenario(parameters);
+    FAIL() << "the dressing closed a seam it cannot";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find((dir / "dressing_failed.vtu").string()), std::string::npos) << message;
+    EXPECT_NE(message.find((dir / "dressing_failed_body.vtu").string()), std::string::npos)
+        << message;
+  }
+  const TriangleGrid body = read_triangle_vtu((dir / "dressing_failed_body.vtu").string());
+  const double radius_m = 3.0 * rest_radius_45T_m;
+  double farthest_m = 0.0;
+  for (const Vec3& p : body.points_m) {
+    const double r = std::hypot(p.y(), p.z());
+    EXPECT_LE(r, radius_m * (1 + 1e-9));
+    farthest_m = std::max(farthest_m, r);
+  }
+  EXPECT_NEAR(farthest_m, radius_m, 1e-9 * radius_m);
+  const TriangleGrid garment = read_triangle_vtu((dir / "dressing_failed.vtu").string());
+  ASSERT_FALSE(garment.triangles.empty());
+  double nearest_m = 1.0;
+  for (const Vec3& p : garment.points_m) nearest_m = std::min(nearest_m, std::hypot(p.y(), p.z()));
+  std::printf("garment points from %.6f m of the axis, the body's radius %.6f m\n", nearest_m,
+              radius_m);
+  EXPECT_GE(nearest_m, radius_m - 1e-3);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Dressing, PanelsPlacedInsideTheShrunkBodyArePushedOutAndSewn) {
