@@ -108,6 +108,14 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "(count).");
   prm.declare_entry("Line search", d.line_search ? "true" : "false", Bool(),
                     "Backtrack along each Newton direction until the residual norm decreases.");
+  prm.declare_entry("Globalization", d.potential_line_search ? "potential" : "residual",
+                    Selection("potential|residual"),
+                    "How a Newton step is made safe (docs/backends.md, \"Newton's line search\"). "
+                    "potential: the line search also accepts a step that lowers the potential "
+                    "(the membrane's energy, the contact penalty's potential, less the weight's "
+                    "work) where the residual norm does not decrease, and a step the line search "
+                    "cut is followed by one solve on the contact set it predicts; residual: the "
+                    "residual norm alone decides, with no prediction after a cut step.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");
   prm.declare_entry("Contact set predictions", std::to_string(d.max_contact_set_predictions),
@@ -193,6 +201,7 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   residual_tolerance = prm.get_double("Residual tolerance");
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   line_search = prm.get_bool("Line search");
+  potential_line_search = prm.get("Globalization") == "potential";
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");
   max_contact_set_predictions = prm.get_integer("Contact set predictions");
   penalty_factor = prm.get_double("Penalty factor");
