@@ -108,7 +108,7 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "(count).");
   prm.declare_entry("Line search", d.line_search ? "true" : "false", Bool(),
                     "Backtrack along each Newton direction until the residual norm decreases.");
-  prm.declare_entry("Globalization", d.potential_line_search ? "potential" : "residual",
+  prm.declare_entry("Globalization", d.potential_globalization ? "potential" : "residual",
                     Selection("potential|residual"),
                     "How a Newton step is made safe (docs/backends.md, \"Newton's line search\"). "
                     "potential: the line search also accepts a step that lowers the potential "
@@ -201,7 +201,7 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   residual_tolerance = prm.get_double("Residual tolerance");
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   line_search = prm.get_bool("Line search");
-  potential_line_search = prm.get("Globalization") == "potential";
+  potential_globalization = prm.get("Globalization") == "potential";
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");
   max_contact_set_predictions = prm.get_integer("Contact set predictions");
   penalty_factor = prm.get_double("Penalty factor");

@@ -65,7 +65,7 @@ struct FemParameters {
   // Globalization = potential: the line search also accepts a step that lowers the potential
   // and a cut step is followed by a contact-set prediction (docs/backends.md, "Newton's line
   // search"); false (residual): the residual's norm alone decides.
-  bool potential_line_search = true;
+  bool potential_globalization = true;
   int max_line_search_halvings = 10;
   // Newton steps re-solved with the contact set the step predicts, at most this many times per
   // step (fem/contact_set_prediction.h); 0: each step on the contact set at x.

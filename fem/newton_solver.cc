@@ -211,7 +211,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // it), and re-solving on the set the step reaches is what lets the next step be taken
     // whole (docs/backends.md, "Newton's line search").
     const int prediction_rounds =
-        step_cut_ && parameters_.potential_line_search
+        step_cut_ && parameters_.potential_globalization
             ? std::max(parameters_.max_contact_set_predictions, kPredictionRoundsAfterCut)
             : parameters_.max_contact_set_predictions;
     bool predict = predictor_ && prediction_rounds > 0, predicted = false, reassemble = false;
@@ -269,9 +269,10 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       accepted = !parameters_.line_search;
       // The potential's slope along the increment, dPi/ds = R . increment = -rhs . increment
       // (rhs is zero on constrained rows), read before the trial assemblies overwrite rhs.
-      const double slope_J = parameters_.line_search && parameters_.potential_line_search && energy_
-                                 ? -owned_dot(system, increment)
-                                 : std::numeric_limits<double>::quiet_NaN();
+      const double slope_J =
+          parameters_.line_search && parameters_.potential_globalization && energy_
+              ? -owned_dot(system, increment)
+              : std::numeric_limits<double>::quiet_NaN();
       for (int halving = 0; parameters_.line_search; ++halving) {
         trial = x;
         trial.add(s, increment);
