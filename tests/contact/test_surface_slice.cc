@@ -25,6 +25,16 @@ TriangleSurface z_up(const PolygonMesh& mesh, const Vec3& shift = Vec3::Zero()) 
   return import_surface(mesh, options);
 }
 
+// Two surfaces as one (two legs side by side).
+TriangleSurface merged(const TriangleSurface& a, const TriangleSurface& b) {
+  TriangleSurface both = a;
+  const int offset = static_cast<int>(a.vertices_m.size());
+  both.vertices_m.insert(both.vertices_m.end(), b.vertices_m.begin(), b.vertices_m.end());
+  for (Triangle t : b.triangles)
+    both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  return both;
+}
+
 // Perimeter and area of the regular n-gon inscribed in a circle of radius r.
 double polygon_perimeter(double r, int n) {
   return 2 * n * r * std::sin(M_PI / n);
@@ -61,11 +71,7 @@ TEST(SurfaceSlice, PicksTheLegRoundThePoint) {
       z_up(testing::revolution_surface({0.0, 0.4}, {0.05, 0.05}, 32), Vec3(0.1, 0, 0));
   const TriangleSurface b =
       z_up(testing::revolution_surface({0.0, 0.4}, {0.06, 0.06}, 32), Vec3(-0.1, 0, 0));
-  TriangleSurface both = a;
-  const int offset = static_cast<int>(a.vertices_m.size());
-  both.vertices_m.insert(both.vertices_m.end(), b.vertices_m.begin(), b.vertices_m.end());
-  for (Triangle t : b.triangles)
-    both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const TriangleSurface both = merged(a, b);
   const SliceLoop right = slice_surface(both, Vec3::UnitZ(), 0.2, Vec3(0.12, 0.01, 0));
   const SliceLoop left = slice_surface(both, Vec3::UnitZ(), 0.2, Vec3(-0.3, 0, 0));  // outside both
   EXPECT_NEAR(right.perimeter_m, polygon_perimeter(0.05, 32), 1e-12);
@@ -83,11 +89,7 @@ TEST(SurfaceSlice, BoundaryAlongARayAndTheOtherLoop) {
       z_up(testing::revolution_surface({0.0, 0.4}, {0.05, 0.05}, n), Vec3(0.1, 0, 0));
   const TriangleSurface b =
       z_up(testing::revolution_surface({0.0, 0.4}, {0.06, 0.06}, 64), Vec3(-0.1, 0, 0));
-  TriangleSurface both = a;
-  const int offset = static_cast<int>(a.vertices_m.size());
-  both.vertices_m.insert(both.vertices_m.end(), b.vertices_m.begin(), b.vertices_m.end());
-  for (Triangle t : b.triangles)
-    both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const TriangleSurface both = merged(a, b);
   const SliceLoop right = slice_surface(both, Vec3::UnitZ(), 0.2, Vec3(0.1, 0, 0));
   // The section's corners lie where the mesh's vertices do: find one's direction.
   Vec3 corner = right.points_m.front() - right.centroid_m;
@@ -147,11 +149,7 @@ TEST(TubeRoundLimb, RingsBesideAnotherLegFollowTheSection) {
       z_up(testing::revolution_surface({-0.2, 0.3}, {r, r}, n), Vec3(r + half_gap, 0, 0));
   const TriangleSurface b =
       z_up(testing::revolution_surface({-0.2, 0.3}, {r, r}, n), Vec3(-r - half_gap, 0, 0));
-  TriangleSurface both = a;
-  const int offset = static_cast<int>(a.vertices_m.size());
-  both.vertices_m.insert(both.vertices_m.end(), b.vertices_m.begin(), b.vertices_m.end());
-  for (Triangle t : b.triangles)
-    both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const TriangleSurface both = merged(a, b);
   const Garment tube = make_tube_garment("leg", 0.1, 0.2, 2, MeshSpacing{0.01, 0.02});
   const SimulationMesh mesh = weld(tube);
   const std::vector<Vec3> x =
