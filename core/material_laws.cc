@@ -7,6 +7,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 namespace tightfit {
 
@@ -74,6 +76,27 @@ class LinearBiot {
     return stiffness_.quadratic_energy(e[0], e[1], e[2]);
   }
   double stiffness_scale() const { return stiffness_.largest(); }
+
+  // dW/dv, v = (C11, C22, C12), by hand: the stress every force evaluation asks for, at a
+  // third of the cost of differentiating energy() with dual numbers (which gives the same to
+  // round-off). With s = sqrt(det C), t = sqrt(tr C + 2 s), p_a = C_aa + s, e_a = p_a / t - 1,
+  // e_3 = C12 / t and g = dW/de = (D11 e1 + D12 e2, D12 e1 + D22 e2, 4 D33 e3):
+  //   dW/dv = (g1 dp1/dv + g2 dp2/dv + g3 dC12/dv) / t - (g . (p1, p2, C12)) / t^2 dt/dv.
+  std::array<double, 3> energy_gradient(double c11, double c22, double c12) const {
+    const double s = std::sqrt(c11 * c22 - c12 * c12);
+    const double t = std::sqrt(c11 + c22 + 2.0 * s);
+    const double p1 = c11 + s, p2 = c22 + s;
+    const double e1 = p1 / t - 1.0, e2 = p2 / t - 1.0, e3 = c12 / t;
+    const OrthotropicStiffness& d = stiffness_;
+    const double g1 = d.d11 * e1 + d.d12 * e2, g2 = d.d12 * e1 + d.d22 * e2, g3 = 4.0 * d.d33 * e3;
+    const double ds[3] = {0.5 * c22 / s, 0.5 * c11 / s, -c12 / s};
+    const double dt[3] = {(1.0 + 2.0 * ds[0]) / (2.0 * t), (1.0 + 2.0 * ds[1]) / (2.0 * t),
+                          ds[2] / t};
+    const double q = (g1 * p1 + g2 * p2 + g3 * c12) / (t * t);
+    return {(g1 * (1.0 + ds[0]) + g2 * ds[0]) / t - q * dt[0],
+            (g1 * ds[1] + g2 * (1.0 + ds[1])) / t - q * dt[1],
+            ((g1 + g2) * ds[2] + g3) / t - q * dt[2]};
+  }
 
  private:
   OrthotropicStiffness stiffness_;
@@ -196,8 +219,17 @@ class TensileCurveLaw {
   TensileCurves curves_;
 };
 
+// Whether a law gives its energy's gradient by hand (energy_gradient(c11, c22, c12)).
+template <class Law, class = void>
+struct HasEnergyGradient : std::false_type {};
+template <class Law>
+struct HasEnergyGradient<
+    Law, std::void_t<decltype(std::declval<const Law&>().energy_gradient(0.0, 0.0, 0.0))>>
+    : std::true_type {};
+
 // Differentiates a law's energy: variables v = (C11, C22, C12) with C21 = C12, so that
 // S = (2 dW/dC11, 2 dW/dC22, dW/dC12) and D = M H M with H the Hessian in v, M = diag(2, 2, 1).
+// A law with a hand-written gradient gives the stress from it.
 template <class Law>
 class DifferentiatedLaw final : public MaterialLaw {
  public:
@@ -206,6 +238,12 @@ class DifferentiatedLaw final : public MaterialLaw {
   std::string name() const override { return Law::name(); }
   double energy(const Mat2& C) const override { return law_.energy(C(0, 0), C(1, 1), C(0, 1)); }
   Mat2 stress(const Mat2& C) const override {
+    if constexpr (HasEnergyGradient<Law>::value) {
+      const std::array<double, 3> g = law_.energy_gradient(C(0, 0), C(1, 1), C(0, 1));
+      Mat2 S;
+      S << 2.0 * g[0], g[2], g[2], 2.0 * g[1];
+      return S;
+    }
     using D1 = Dual<3>;
     const D1 w =
         law_.energy(D1::variable(C(0, 0), 0), D1::variable(C(1, 1), 1), D1::variable(C(0, 1), 2));
