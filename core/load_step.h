@@ -21,6 +21,10 @@ struct StopRule {
   StopNorm norm = StopNorm::largest;
   // Largest penetration of a vertex in contact at a finished step with multiplier updates, m.
   double gap_tolerance_m = 1e-8;
+  // The case's body is a mesh touched on its flat faces (Body/Mesh/Contact surface = faceted):
+  // the entries left at auto, here and in a backend's subsection, take their values for it
+  // (the mass-spring settle's in massspring/massspring_parameters.h).
+  bool faceted_body = false;
 
   // Throws std::invalid_argument naming the Solver entry when a value is out of range;
   // `zero_tolerance_allowed` for a backend with a rule of its own at 0.

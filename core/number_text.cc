@@ -17,4 +17,11 @@ std::optional<double> whole_number(const std::string& text) {
   return value;
 }
 
+std::optional<double> auto_or_number(const std::string& text, const std::string& entry) {
+  if (text == "auto") return std::nullopt;
+  const std::optional<double> value = whole_number(text);
+  if (!value) throw std::invalid_argument(entry + " = '" + text + "': neither auto nor a number");
+  return value;
+}
+
 }  // namespace tightfit

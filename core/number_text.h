@@ -11,4 +11,9 @@ namespace tightfit {
 // characters, an overflow, infinity or NaN).
 std::optional<double> whole_number(const std::string& text);
 
+// A parameter entry whose default depends on the case (the settle's defaults on a faceted body
+// mesh, docs/parameters.md): its text is "auto" (nothing: the caller's default for the case) or
+// a whole number. Throws std::invalid_argument naming `entry` when it is neither.
+std::optional<double> auto_or_number(const std::string& text, const std::string& entry);
+
 }  // namespace tightfit

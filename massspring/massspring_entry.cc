@@ -22,8 +22,9 @@ BackendEntry massspring_backend_entry() {
   entry.create = [](const Problem& problem, const StopRule& stop,
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
     MassSpringParameters parameters;
-    parameters.parse_parameters(prm);
+    parameters.parse_parameters(prm, stop.faceted_body);
     parameters.stop = stop;
+    parameters.validate();
     return std::make_unique<MassSpringBackend>(problem, parameters);
   };
   return entry;

@@ -1,8 +1,12 @@
 #include "massspring/massspring_parameters.h"
 
+#include "core/number_text.h"
+
 #include <deal.II/base/parameter_handler.h>
 
+#include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace tightfit {
 
@@ -14,13 +18,44 @@ std::string text(T value) {
   out << value;
   return out.str();
 }
+
+// The documentation's note on an entry whose default depends on the body (on_faceted_body).
+std::string auto_note(double faceted, double elsewhere) {
+  return " auto: " + text(faceted) +
+         " on a body mesh with Body/Mesh/Contact surface = faceted (massspring_parameters.h "
+         "says why), " +
+         text(elsewhere) + " elsewhere.";
+}
+
+// A count's entry read as a number: a whole one, in range for an int.
+int whole_count(double value, const std::string& name) {
+  if (!(value == std::floor(value) && std::abs(value) < 1e9))
+    throw std::invalid_argument("Mass spring/" + name + " = " + text(value) +
+                                ": must be a whole number");
+  return int(value);
+}
+
+// An entry's text, auto or a number: the number, or `fallback` for auto.
+double auto_or(const std::string& text, const std::string& name, double fallback) {
+  return auto_or_number(text, "Mass spring/" + name).value_or(fallback);
+}
 }  // namespace
 
+MassSpringParameters MassSpringParameters::on_faceted_body() {
+  MassSpringParameters p;
+  p.contact_normal_damping_ratio = 0.5;
+  p.time_step_update_frames = 100;
+  p.net_force_tolerance = 0.05;
+  return p;
+}
+
 void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
+  using dealii::Patterns::Anything;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
   const MassSpringParameters d;
+  const MassSpringParameters f = on_faceted_body();
   prm.enter_subsection("Mass spring");
   prm.declare_entry("Integrator", "rk4", Selection("rk4|implicit"),
                     "How each load step reaches its stable state. 'rk4': the paper's damped "
@@ -40,12 +75,12 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
                     "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
                     "(membrane, bending, penalty contact), recomputed every load step.");
-  prm.declare_entry("Time step update frames", text(d.time_step_update_frames),
-                    Integer(0, 100000000),
+  prm.declare_entry("Time step update frames", "auto", Anything(),
                     "With the automatic time step (Time step = 0), above 0: the step is chosen "
                     "again from the current state every this many frames of a load step (halved "
                     "as often as the stall test has halved it). 0 = chosen once at the start of "
-                    "each load step.");
+                    "each load step." +
+                        auto_note(f.time_step_update_frames, d.time_step_update_frames));
   prm.declare_entry("Time step safety", text(d.time_step_safety), Double(1e-3, 1.2),
                     "Fraction of the RK4 stability limit used by the automatic time step, "
                     "dimensionless.");
@@ -60,20 +95,20 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "velocity|, below half the net force limit for 3 / (this) s. The stop rule is "
                     "read only after that. A garment creeping down the body under its weight "
                     "slides at a speed the damping sets (docs/dressing.md). 0 = off. RK4 only.");
-  prm.declare_entry("Contact normal damping ratio", text(d.contact_normal_damping_ratio),
-                    Double(0.0, 1.0),
+  prm.declare_entry("Contact normal damping ratio", "auto", Anything(),
                     "Damping ratio zeta of each vertex's penalty contact spring along the body's "
                     "normal, dimensionless in [0, 1]: a vertex in contact gets -2 zeta sqrt(kA m) "
                     "(v . d) d (kA its penalty stiffness in N/m, m its mass in kg, v its velocity, "
                     "d the gradient of its gap: the normal, the face's on a faceted body); 1 = "
                     "critical damping of the mass on its contact spring. Damps the chatter of "
                     "vertices on a faceted body, not a slide along "
-                    "it; the stop rule's residual leaves it out. 0 = off. RK4 only.");
+                    "it; the stop rule's residual leaves it out. 0 = off. RK4 only." +
+                        auto_note(f.contact_normal_damping_ratio, d.contact_normal_damping_ratio));
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
                     "zero every frame) before damped RK4 takes over; the start also ends when "
                     "the stop rule is met.");
-  prm.declare_entry("Net force tolerance", text(d.net_force_tolerance), Double(0.0, 1e6),
+  prm.declare_entry("Net force tolerance", "auto", Anything(),
                     "Stop rule on the garment as a whole beside Solver/Relative tolerance, "
                     "dimensionless: above 0, a state is stable only when the net force on the "
                     "garment (the sum of the residual "
@@ -81,7 +116,8 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "below this times the garment's weight (its mass times 9.80665 m/s^2, "
                     "whether gravity acts or not). The rms stop norm alone accepts a garment "
                     "still sliding over the body: a net force F spread over n vertices adds "
-                    "only F / n to each (docs/dressing.md). 0 = off.");
+                    "only F / n to each (docs/dressing.md). 0 = off." +
+                        auto_note(f.net_force_tolerance, d.net_force_tolerance));
   prm.declare_entry("Maximum frames", text(d.maximum_frames), Integer(1, 2000000000),
                     "Guard against non-convergence, frames: a load step that has not met the "
                     "stop rule by then fails with an error naming the step and residual.");
@@ -129,18 +165,21 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
+void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool faceted_body) {
+  const MassSpringParameters d = faceted_body ? on_faceted_body() : MassSpringParameters{};
   prm.enter_subsection("Mass spring");
   integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
-  time_step_update_frames = prm.get_integer("Time step update frames");
+  // The entries that may be auto are read as text here and as numbers once the subsection is
+  // left, so that a refused one leaves the handler where it was.
+  const std::string update_frames_text = prm.get("Time step update frames");
   damping_per_s = prm.get_double("Damping");
   slide_damping_per_s = prm.get_double("Slide damping");
-  contact_normal_damping_ratio = prm.get_double("Contact normal damping ratio");
+  const std::string contact_damping_text = prm.get("Contact normal damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
-  net_force_tolerance = prm.get_double("Net force tolerance");
+  const std::string net_force_text = prm.get("Net force tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
   stall_window_frames = prm.get_integer("Stall window");
   stall_fall = prm.get_double("Stall residual fall");
@@ -151,6 +190,12 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm) {
   placement_gap_m = prm.get_double("Placement gap");
   seam_stiffness_factor = prm.get_double("Seam spring stiffness factor");
   prm.leave_subsection();
+  time_step_update_frames =
+      whole_count(auto_or(update_frames_text, "Time step update frames", d.time_step_update_frames),
+                  "Time step update frames");
+  contact_normal_damping_ratio =
+      auto_or(contact_damping_text, "Contact normal damping ratio", d.contact_normal_damping_ratio);
+  net_force_tolerance = auto_or(net_force_text, "Net force tolerance", d.net_force_tolerance);
   validate();
 }
 

@@ -110,9 +110,20 @@ struct MassSpringParameters {
   // Throws std::invalid_argument naming the entry when a value is out of range.
   void validate() const;
 
+  // The settle on a body mesh touched on its flat faces (Body/Mesh/Contact surface = faceted;
+  // docs/dressing.md): these defaults, and the stop rule's (the rms at 3e-3, StopRule), replace
+  // the ones above for the entries a case leaves at auto. A few vertices next to the flat faces
+  // chatter in a contact limit cycle: a damper on each contact spring along the face's normal
+  // (zeta 0.5) ends it without holding back a slide; the time step chosen again
+  // every 100 frames, as a dressed state starts with squashed edges that relax; the net force
+  // on the garment below 5 % of its weight, as the rms alone accepts a garment still sliding.
+  static MassSpringParameters on_faceted_body();
+
   static void declare_parameters(dealii::ParameterHandler& prm);
-  // Reads the "Mass spring" subsection (not `stop`: the caller sets it from the Solver one).
-  void parse_parameters(dealii::ParameterHandler& prm);
+  // Reads the "Mass spring" subsection (not `stop`: the caller sets it from the Solver one);
+  // the entries at auto take on_faceted_body()'s values when `faceted_body`, the ones above
+  // otherwise.
+  void parse_parameters(dealii::ParameterHandler& prm, bool faceted_body = false);
 };
 
 }  // namespace tightfit

@@ -6,7 +6,10 @@
 #
 # Usage: scripts/top-figures.sh [TIGHTFIT [CASE...]]
 #   TIGHTFIT  the program (default build/app/tightfit)
-#   CASE      case names in cases/ (default: top_female top_male top_female_bodice)
+#   CASE      case names in cases/ (default: top_female top_male top_female_bodice), or
+#             compression_top_BODY: cases/compression_top.prm on the body BODY, one of female
+#             (the case's own), male (MakeHuman's) and garmentcode_male
+#             (docs/cookbook-dressed-top.md)
 # About 40 s of CPU for each aaron top and 30 s for the bodice (docs/dressing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,13 +23,23 @@ if [[ ! -x $tightfit ]]; then
 fi
 for name in "${cases[@]}"; do
   prm=cases/$name.prm
+  body=()
+  case $name in
+    compression_top_female) prm=cases/compression_top.prm ;;
+    compression_top_male)
+      prm=cases/compression_top.prm
+      body=(--set "Body/Mesh/File=../data/bodies/makehuman_default_male_body_m.obj") ;;
+    compression_top_garmentcode_male)
+      prm=cases/compression_top.prm
+      body=(--set "Body/Mesh/File=../data/bodies/garmentcode_mean_male.obj") ;;
+  esac
   if [[ ! -f $prm ]]; then
     echo "top-figures: no case file $prm" >&2
     exit 2
   fi
   out=output/$name
   echo "== $prm -> $out"
-  "$tightfit" run "$prm" --set "Output/Directory=$out"
+  "$tightfit" run "$prm" "${body[@]}" --set "Output/Directory=$out"
   for view in front back; do
     cp "$out/pressure_$view.png" "docs/figures/${name}_$view.png"
   done

@@ -73,12 +73,18 @@ TEST_P(TubeOnMeshCylinder, MeanPressureWithinTheFacetsChordError) {
                         setting("Body/Cylinder/Initial radius", rho * (1 - 1e-12)),
                         "Protocol/Alpha increment=0.5", setting("Protocol/Final alpha", kAlpha)},
                        GetParam());
+  // Both surfaces settle as the cylinder does (the defaults elsewhere than on a faceted body
+  // mesh, whose own, the rms at 3e-3, would loosen the stop rule beyond the facets' effect
+  // measured here): only the surface differs.
   auto on_prism = [&](const std::string& surface) {
     return mean_pressure_Pa(
         {"Body/Kind=mesh", "Body/Mesh/File=" + obj, "Body/Mesh/Up axis=+z",
          "Body/Mesh/Contact surface=" + surface, "Placement/Kind=tube round axis",
          "Placement/Tube round axis/Axis=0,0,1",
-         setting("Placement/Tube round axis/Radius", 1.005 * rho), "Protocol/Final alpha=1"},
+         setting("Placement/Tube round axis/Radius", 1.005 * rho), "Protocol/Final alpha=1",
+         "Solver/Relative tolerance=1e-4", "Solver/Stop norm=largest", "Solver/Gap tolerance=1e-8",
+         "Mass spring/Contact normal damping ratio=0", "Mass spring/Time step update frames=0",
+         "Mass spring/Net force tolerance=0"},
         GetParam());
   };
   const double p_faceted = on_prism("faceted"), p_smooth = on_prism("smooth");

@@ -75,7 +75,8 @@ void expect_refused_naming(const MassSpringParameters& p, const std::string& ent
   }
 }
 
-// The entry read from a file at `value`, and a file giving it `out_of_range` refused.
+// The entry read from a file at `value`, and a file giving it `out_of_range` refused (by the
+// file's pattern or, for an entry that may be auto, when read).
 MassSpringParameters read_with(const std::string& entry, const std::string& value,
                                const std::string& out_of_range) {
   dealii::ParameterHandler prm;
@@ -84,8 +85,56 @@ MassSpringParameters read_with(const std::string& entry, const std::string& valu
   prm.parse_input_from_string(head + value + "\nend\n");
   MassSpringParameters p;
   p.parse_parameters(prm);
-  EXPECT_ANY_THROW(prm.parse_input_from_string(head + out_of_range + "\nend\n"));
+  EXPECT_ANY_THROW({
+    prm.parse_input_from_string(head + out_of_range + "\nend\n");
+    MassSpringParameters refused;
+    refused.parse_parameters(prm);
+  });
   return p;
+}
+
+// The entries left at auto: the struct's defaults on an analytic body or a smooth mesh, the
+// faceted body's (on_faceted_body) on a faceted mesh; a number given wins on either; a word
+// that is neither is refused naming the entry.
+TEST(MassSpringParameters, AutoEntriesTakeTheFacetedBodysDefaultsOnlyThere) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  MassSpringParameters elsewhere;
+  elsewhere.parse_parameters(prm, false);
+  const MassSpringParameters d;
+  EXPECT_EQ(elsewhere.contact_normal_damping_ratio, d.contact_normal_damping_ratio);
+  EXPECT_EQ(elsewhere.time_step_update_frames, d.time_step_update_frames);
+  EXPECT_EQ(elsewhere.net_force_tolerance, d.net_force_tolerance);
+  MassSpringParameters faceted;
+  faceted.parse_parameters(prm, true);
+  const MassSpringParameters f = MassSpringParameters::on_faceted_body();
+  EXPECT_EQ(faceted.contact_normal_damping_ratio, f.contact_normal_damping_ratio);
+  EXPECT_EQ(faceted.time_step_update_frames, f.time_step_update_frames);
+  EXPECT_EQ(faceted.net_force_tolerance, f.net_force_tolerance);
+  // The faceted body's settle differs from the default one in every one of them.
+  EXPECT_NE(f.contact_normal_damping_ratio, d.contact_normal_damping_ratio);
+  EXPECT_NE(f.time_step_update_frames, d.time_step_update_frames);
+  EXPECT_NE(f.net_force_tolerance, d.net_force_tolerance);
+
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Time step update frames = 7\n"
+      "  set Contact normal damping ratio = 0\nend\n");
+  faceted.parse_parameters(prm, true);
+  EXPECT_EQ(faceted.time_step_update_frames, 7);
+  EXPECT_EQ(faceted.contact_normal_damping_ratio, 0.0);
+
+  for (const char* bad : {"often", "2.5"}) {
+    prm.parse_input_from_string(
+        std::string("subsection Mass spring\n  set Time step update frames = ") + bad + "\nend\n");
+    try {
+      faceted.parse_parameters(prm, true);
+      ADD_FAILURE() << "Time step update frames = " << bad << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("Mass spring/Time step update frames"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 TEST(MassSpringParameters, TimeStepUpdateFramesAreReadAndNotNegative) {
