@@ -83,13 +83,16 @@ std::vector<std::string> coarse_top() {
 // case's regions named by anatomy (docs/measuring-bodies.md): under bust 3.3844, bust 53.033,
 // scapula 4.1263, waist 15.230. At a three times tighter stop rule (Solver/Relative tolerance =
 // 1e-3) they move by 0.12 (under bust: a contact area of 0.75 cm2, one or two vertices), 1.7e-3
-// (bust), 0.034 (scapula) and 6.6e-4 (waist) of themselves: allowed 0.25, 5e-3, 0.07 and 5e-3,
-// about twice that (and 5e-3 where it is smaller).
+// (bust), 0.034 (scapula) and 6.6e-4 (waist) of themselves. A change of the forces at round-off
+// (the linear Biot stress written out instead of differentiated, 1e-10 relative) moves the
+// frictional settle's path and its means by up to 5.4e-3 (bust: 53.320), 0.24 (under bust),
+// 0.039 (scapula) and 1.7e-3 (waist): allowed 1e-2 (bust, waist), 0.07 (scapula) and 0.5
+// (under bust), about twice the larger of the two (1e-2 where both are smaller).
 TEST(GarmentRegressions, CoarseTopOnBothBackends) {
   const auto means = region_means_Pa("cases/top_female.prm", coarse_top(), "massspring", true);
-  expect_means(means, {{"bust", 53.033}, {"waist", 15.230}}, 5e-3);
+  expect_means(means, {{"bust", 53.033}, {"waist", 15.230}}, 1e-2);
   expect_means(means, {{"scapula", 4.1263}}, 0.07);
-  expect_means(means, {{"under bust", 3.3844}}, 0.25);
+  expect_means(means, {{"under bust", 3.3844}}, 0.5);
 
   // The FE backend from that settled top (Placement/Kind = from file), as the case's own FE run
   // starts (from the dressed state itself, 30 mm or 15 mm, its Newton iteration meets a
