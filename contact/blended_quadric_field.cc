@@ -15,12 +15,16 @@ Vec3 any_normal_to(const Vec3& n) {
 }
 
 // One vertex's quadric and weight at x.
+// The Hessian of w is alpha I + beta delta delta^T (delta = x - p_i), plus `turned`'s matrix
+// for a vertex the facing factor scales (index into the query's list of them, or -1).
 struct Term {
   int vertex;
+  int turned;
   double w;
-  Vec3 dw;  // grad w
-  Mat3 hw;  // Hessian of w
   double d;
+  double alpha, beta;
+  Vec3 delta;
+  Vec3 dw;  // grad w
   Vec3 dd;  // grad d = n + K (x - p)
 };
 
@@ -39,7 +43,7 @@ void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
       around[t[k]].push_back(t[(k + 2) % 3]);
     }
   support_m_.assign(n, 0.0);
-  beyond_squared_m2_.assign(n, 0.0);
+  reach_.assign(n, Reach{});
   curvature_.assign(n, Mat3::Zero());
   for (int i = 0; i < n; ++i) {
     std::vector<int>& ring = around[i];
@@ -60,7 +64,7 @@ void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
       right += row * (-2.0 * e.dot(n_[i]));
     }
     support_m_[i] = support_over_longest_edge * longest;
-    beyond_squared_m2_[i] = (1.0 + 1e-9) * support_m_[i] * support_m_[i];
+    reach_[i] = {p_[i], (1.0 + 1e-9) * support_m_[i] * support_m_[i]};
     // A ring too thin to fix all three (collinear neighbours) keeps the least-norm part: the
     // small ridge only matters in a direction no neighbour measures.
     normal_matrix += 1e-12 * (normal_matrix.trace() + 1e-300) * Mat3::Identity();
@@ -104,7 +108,7 @@ void BlendedQuadricField::build_grid() {
   grid_origin_m_ = low;
   for (int k = 0; k < 3; ++k) cells_[k] = static_cast<int>(std::floor(extent[k] / cell_m_)) + 1;
   // Each vertex goes into every cell its ball meets (the cell's nearest point to p_i within
-  // s_i, with the same margin as beyond_squared_m2_), counted first, then filled in vertex
+  // s_i, with the same margin as reach_), counted first, then filled in vertex
   // order, so that a cell sums its quadrics in one fixed order.
   const auto for_each_cell_of = [&](int i, auto&& visit) {
     const Vec3 relative = p_[i] - grid_origin_m_;
@@ -119,7 +123,7 @@ void BlendedQuadricField::build_grid() {
         for (int a = first[0]; a <= last[0]; ++a) {
           const Vec3 corner = Vec3(a, b, c) * cell_m_;
           const Vec3 nearest = relative.cwiseMax(corner).cwiseMin(corner + Vec3::Constant(cell_m_));
-          if ((relative - nearest).squaredNorm() <= beyond_squared_m2_[i])
+          if ((relative - nearest).squaredNorm() <= reach_[i].beyond_squared_m2)
             visit(a + cells_[0] * (b + cells_[1] * c));
         }
   };
@@ -136,8 +140,11 @@ void BlendedQuadricField::build_grid() {
 BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m,
                                                          const Mat3& dm_dx) const {
   thread_local std::vector<Term> terms_storage;
+  thread_local std::vector<Mat3> turned_storage;
   std::vector<Term>& terms = terms_storage;
+  std::vector<Mat3>& turned = turned_storage;
   terms.clear();
+  turned.clear();
   // The cell holding x; outside the grid no support reaches x.
   const Vec3 relative = (x - grid_origin_m_) / cell_m_;
   std::array<int, 3> at;
@@ -146,12 +153,14 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     at[k] = std::min(cells_[k] - 1, static_cast<int>(relative[k]));
   }
   const int cell = at[0] + cells_[0] * (at[1] + cells_[1] * at[2]);
-  for (int c = cell_start_[cell]; c < cell_start_[cell + 1]; ++c) {
-    const int i = cell_vertices_[c];
-    const Vec3 delta = x - p_[i];
+  const Reach* const reach = reach_.data();
+  const int* const listed = cell_vertices_.data();
+  for (int c = cell_start_[cell], end = cell_start_[cell + 1]; c < end; ++c) {
+    const int i = listed[c];
+    const Vec3 delta = x - reach[i].centre_m;
     // Most vertices of the cell's list lie beyond their support of x: their squared distance
     // tells so without the root and the division (a margin of 1e-9 keeps the test below exact).
-    if (delta.squaredNorm() > beyond_squared_m2_[i]) continue;
+    if (delta.squaredNorm() > reach[i].beyond_squared_m2) continue;
     const double s = support_m_[i], distance = delta.norm(), r = distance / s;
     // The facing factor: S((n_i . m + 1/2) / (1/2)), S the quintic smoothstep.
     const double a = 2.0 * (n_[i].dot(m) + 0.5);
@@ -161,10 +170,13 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     const double u = 1.0 - r;
     Term t;
     t.vertex = i;
+    t.turned = -1;
+    t.delta = delta;
     t.w = u * u * u * u * (4 * r + 1);
-    t.dw = -20.0 * u * u * u * delta / (s * s);
-    t.hw = -20.0 / (s * s) * u * u * u * Mat3::Identity();
-    if (distance > 0) t.hw += 60.0 / (s * s) * u * u * delta * delta.transpose() / (distance * s);
+    const double over_s2 = 1.0 / (s * s);
+    t.alpha = -20.0 * over_s2 * u * u * u;
+    t.dw = t.alpha * delta;
+    t.beta = distance > 0 ? 60.0 * over_s2 * u * u / (distance * s) : 0.0;
     if (a < 1.0) {
       // w <- w S(a): grad (w S) = S grad w + w S' grad a, grad a = 2 (dm/dx)^T n_i; its
       // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T, the
@@ -173,8 +185,11 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
       const double S = a * a * a * (10 - 15 * a + 6 * a * a);
       const double dS = 30 * a * a * (1 - a) * (1 - a), d2S = 60 * a * (1 - a) * (1 - 2 * a);
       const Vec3 da = 2.0 * dm_dx.transpose() * n_[i];
-      t.hw = S * t.hw + dS * (t.dw * da.transpose() + da * t.dw.transpose()) +
-             t.w * d2S * da * da.transpose();
+      t.turned = static_cast<int>(turned.size());
+      turned.push_back(dS * (t.dw * da.transpose() + da * t.dw.transpose()) +
+                       t.w * d2S * da * da.transpose());
+      t.alpha *= S;
+      t.beta *= S;
       t.dw = S * t.dw + t.w * dS * da;
       t.w *= S;
     }
@@ -197,13 +212,33 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   for (const Term& t : terms) v.gradient += (t.w * t.dd + (t.d - v.phi_m) * t.dw) / W;
   // From W phi = S differentiated twice:
   // H phi = sum [(d_i - phi) H w_i + grad w_i (grad d_i - grad phi)^T
-  //              + (grad d_i - grad phi) grad w_i^T + w_i K_i] / W.
+  //              + (grad d_i - grad phi) grad w_i^T + w_i K_i] / W,
+  // summed in its six distinct entries (every term is symmetric), H w_i as Term says.
+  double h[6] = {0, 0, 0, 0, 0, 0};  // (0,0) (1,1) (2,2) (0,1) (0,2) (1,2)
+  double diagonal = 0.0;
   for (const Term& t : terms) {
-    const Vec3 dd = t.dd - v.gradient;
-    v.hessian_per_m += ((t.d - v.phi_m) * t.hw + t.dw * dd.transpose() + dd * t.dw.transpose() +
-                        t.w * curvature_[t.vertex]) /
-                       W;
+    const double off = t.d - v.phi_m, c = off * t.beta;
+    const Vec3 e = t.dd - v.gradient;
+    const Vec3& q = t.delta;
+    const Vec3& g = t.dw;
+    const Mat3& K = curvature_[t.vertex];
+    diagonal += off * t.alpha;
+    h[0] += c * q[0] * q[0] + 2 * g[0] * e[0] + t.w * K(0, 0);
+    h[1] += c * q[1] * q[1] + 2 * g[1] * e[1] + t.w * K(1, 1);
+    h[2] += c * q[2] * q[2] + 2 * g[2] * e[2] + t.w * K(2, 2);
+    h[3] += c * q[0] * q[1] + g[0] * e[1] + e[0] * g[1] + t.w * K(0, 1);
+    h[4] += c * q[0] * q[2] + g[0] * e[2] + e[0] * g[2] + t.w * K(0, 2);
+    h[5] += c * q[1] * q[2] + g[1] * e[2] + e[1] * g[2] + t.w * K(1, 2);
+    if (t.turned >= 0) v.hessian_per_m += off * turned[t.turned];
   }
+  Mat3& H = v.hessian_per_m;
+  H(0, 0) += h[0] + diagonal;
+  H(1, 1) += h[1] + diagonal;
+  H(2, 2) += h[2] + diagonal;
+  H(0, 1) += h[3], H(1, 0) += h[3];
+  H(0, 2) += h[4], H(2, 0) += h[4];
+  H(1, 2) += h[5], H(2, 1) += h[5];
+  H /= W;
   return v;
 }
 

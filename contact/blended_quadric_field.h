@@ -74,8 +74,13 @@ class BlendedQuadricField {
   std::vector<Mat3> curvature_;
   std::vector<double> shift_m_;  // c_i
   std::vector<double> support_m_;
-  // s_i^2 (1 + 1e-9): a vertex farther than its root from x has r >= 1 and adds nothing.
-  std::vector<double> beyond_squared_m2_;
+  // p_i and s_i^2 (1 + 1e-9), side by side for the scan of a cell's list: a vertex farther
+  // than the root from x has r >= 1 and adds nothing.
+  struct Reach {
+    Vec3 centre_m;
+    double beyond_squared_m2;
+  };
+  std::vector<Reach> reach_;
   // Lists, for each cell of a uniform grid, the vertices whose support ball reaches into it.
   void build_grid();
   Vec3 grid_origin_m_ = Vec3::Zero();
