@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -44,23 +45,36 @@ BruteForce brute_force(const BlendedQuadricField& field, const Vec3& x, const Ve
   return b;
 }
 
+// The female (faceted: the flat surface's answers the field is given) and her field, and
+// random points near her surface: off a random vertex by up to `normal_m` along its normal
+// and up to `sideways_m` in each coordinate.
+struct FemaleField {
+  std::unique_ptr<MeshBody> body = load_mesh_body(female, {});
+  BlendedQuadricField field;
+  std::mt19937 random;
+  FemaleField(unsigned seed) : random(seed) {
+    field.build(body->surface().vertices_m, body->surface().triangles, body->vertex_normals());
+  }
+  Vec3 point_near(double normal_m, double sideways_m) {
+    std::uniform_int_distribution<int> vertex(0, int(body->surface().vertices_m.size()) - 1);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const int v = vertex(random);
+    return body->surface().vertices_m[v] + normal_m * unit(random) * body->vertex_normals()[v] +
+           sideways_m * Vec3(unit(random), unit(random), unit(random));
+  }
+};
+
 // Points from 5 mm inside to 5 mm outside the surface over the whole body, off random vertices
 // along their normals and sideways; the flat surface's closest triangle, normal and dn/dx as
 // the mesh body gives them to the field.
 TEST(BlendedQuadricField, EqualsTheBruteForceSumOverEveryVertex) {
-  const auto body = load_mesh_body(female, {});
-  const auto& surface = body->surface();
-  BlendedQuadricField field;
-  field.build(surface.vertices_m, surface.triangles, body->vertex_normals());
-  std::mt19937 random(31);
-  std::uniform_int_distribution<int> vertex(0, int(surface.vertices_m.size()) - 1);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  FemaleField female_field(31);
+  const auto& body = female_field.body;
+  const BlendedQuadricField& field = female_field.field;
   double largest_phi = 0.0, largest_weight = 0.0;
   int differing = 0, points = 0;
   for (int k = 0; k < 20000; ++k, ++points) {
-    const int v = vertex(random);
-    const Vec3 x = surface.vertices_m[v] + 0.005 * unit(random) * body->vertex_normals()[v] +
-                   0.005 * Vec3(unit(random), unit(random), unit(random));
+    const Vec3 x = female_field.point_near(0.005, 0.005);
     const SurfacePoint flat = body->query(x);
     const BlendedQuadricField::Value got =
         field.evaluate(x, flat.outward_normal, flat.normal_derivative_per_m);
@@ -93,20 +107,14 @@ TEST(BlendedQuadricField, EqualsTheBruteForceSumOverEveryVertex) {
 // points where some vertex's facing factor lies between 0 and 1 are counted, so that the
 // factor's own derivatives are exercised.
 TEST(BlendedQuadricField, DerivativesMatchFiniteDifferences) {
-  const auto body = load_mesh_body(female, {});
-  const auto& surface = body->surface();
-  BlendedQuadricField field;
-  field.build(surface.vertices_m, surface.triangles, body->vertex_normals());
-  std::mt19937 random(37);
-  std::uniform_int_distribution<int> vertex(0, int(surface.vertices_m.size()) - 1);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  FemaleField female_field(37);
+  const auto& body = female_field.body;
+  const BlendedQuadricField& field = female_field.field;
   const double h = 3e-8;
   double worst_gradient = 0.0, worst_hessian = 0.0;
   int points = 0, turned = 0;
   for (int k = 0; k < 3000; ++k) {
-    const int v = vertex(random);
-    const Vec3 x0 = surface.vertices_m[v] + 0.002 * unit(random) * body->vertex_normals()[v] +
-                    0.004 * Vec3(unit(random), unit(random), unit(random));
+    const Vec3 x0 = female_field.point_near(0.002, 0.004);
     const SurfacePoint flat = body->query(x0);
     const Vec3 m0 = flat.outward_normal;
     const Mat3 D = flat.normal_derivative_per_m;
