@@ -1,35 +1,14 @@
 #include "app/region_comparison.h"
 
+#include "io/csv_reader.h"
+
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <stdexcept>
 #include <vector>
 
 namespace tightfit {
 
 namespace {
-
-// One CSV line's fields: quoted fields may hold commas, a doubled quote is one quote
-// (io/csv_table.h writes them so).
-std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-      fields.back() += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      fields.emplace_back();
-    } else if (c != '\r') {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
 
 struct RegionRow {
   double mean_Pa = NAN, peak_Pa = NAN;
@@ -38,33 +17,16 @@ struct RegionRow {
 // The last step's rows of a regions.csv, by region name in the file's order; `step` gets the
 // step. Nothing when the file cannot be opened.
 std::vector<std::pair<std::string, RegionRow>> last_step_rows(const std::string& path, int& step) {
-  std::ifstream in(path);
   std::vector<std::pair<std::string, RegionRow>> rows;
   step = -1;
-  if (!in) return rows;
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = csv_fields(line);
-  std::map<std::string, std::size_t> column;
-  for (std::size_t c = 0; c < header.size(); ++c) column[header[c]] = c;
-  for (const char* name : {"step", "region", "p_mean_Pa", "p_peak_Pa"})
-    if (!column.count(name))
-      throw std::runtime_error(path + ": no column '" + name + "' in its header");
-  const auto number = [](const std::string& text) {
-    try {
-      return text.empty() ? NAN : std::stod(text);
-    } catch (const std::exception&) {
-      return static_cast<double>(NAN);
-    }
-  };
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const std::vector<std::string> f = csv_fields(line);
-    if (f.size() < header.size()) continue;
-    const int row_step = static_cast<int>(number(f[column["step"]]));
+  const std::optional<CsvRows> csv = CsvRows::read(path);
+  if (!csv) return rows;
+  const std::size_t step_column = csv->column("step"), region = csv->column("region"),
+                    mean = csv->column("p_mean_Pa"), peak = csv->column("p_peak_Pa");
+  for (std::size_t r = 0; r < csv->n_rows(); ++r) {
+    const int row_step = static_cast<int>(csv->number(r, step_column));
     if (row_step != step) rows.clear(), step = row_step;
-    rows.push_back(
-        {f[column["region"]], {number(f[column["p_mean_Pa"]]), number(f[column["p_peak_Pa"]])}});
+    rows.push_back({csv->text(r, region), {csv->number(r, mean), csv->number(r, peak)}});
   }
   return rows;
 }

@@ -1,6 +1,6 @@
 // A garment placed as its pattern file arranges it (GarmentCode's panels carry their 3D place
 // round the file's own body), moved onto another body by the landmarks, and the skeleton the
-// dressing shrinks that body about (docs/dressing.md "Arrangement from the pattern file").
+// dressing shrinks that body about (docs/arrangement.md "Arrangement from the pattern file").
 #pragma once
 
 #include "body/body_measurements.h"

@@ -1,5 +1,6 @@
 #include "cases/comparison_run.h"
 
+#include "core/mesh_geometry.h"
 #include "io/csv_table.h"
 #include "io/pvd_writer.h"
 #include "io/vtu_share.h"
@@ -86,7 +87,9 @@ ComparisonResult run_comparison(Scenario& setup, const std::string& first_name,
       std::vector<double> difference(pa.pressure_Pa.size());
       for (std::size_t v = 0; v < difference.size(); ++v)
         difference[v] = b.field.pressure_Pa[v] - pa.pressure_Pa[v];
-      SurfaceVtu vtu = garment_vtu(setup.mesh, b.state, b.field, b.alpha);
+      SurfaceVtu vtu =
+          garment_vtu(setup.mesh, b.state, b.field,
+                      vertex_principal_stretches(setup.mesh, b.state.positions_m), b.alpha);
       vtu.add_point_scalar("pressure_Pa_" + first_name, pa.pressure_Pa);
       vtu.add_point_scalar("pressure_difference_Pa", difference);
       char stem[64];

@@ -1,5 +1,5 @@
 // Where a failed dressing leaves the state it stopped in: two VTU files in the run's output
-// directory, for ParaView (docs/dressing.md "When the dressing fails").
+// directory, for ParaView (docs/arrangement.md "What holds the jumpsuit's seams").
 #pragma once
 
 #include "cases/case_parameters.h"

@@ -1,12 +1,12 @@
 // The automatic arrangement of a garment's panels round a body (Placement/Kind = arrangement;
-// docs/dressing.md, "Any body: the arrangement"): each panel is assigned to a side of the
+// docs/arrangement.md, "Any body: the arrangement"): each panel is assigned to a side of the
 // torso, by the case's short list ("front: torso front, back: torso back") or by its name, and
 // wrapped on an elliptic cylinder round the torso's own axis (body/body_measurements.h's
 // PartFrame) that clears the body shrunk for the dressing by a share of its girth; each panel's
 // height comes from the landmarks: the top of its side seam (its most upright seam to another
 // torso panel) a little below the armpits. No coordinate comes from the case.
 //
-// The ease against the body (docs/dressing.md, "Ease against the body"): the pattern's width
+// The ease against the body (docs/arrangement.md, "Ease against the body"): the pattern's width
 // round the body at a girth line (the sum of its torso panels' widths at that line's height, as
 // arranged) over the body's girth there, less one.
 #pragma once

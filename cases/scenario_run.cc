@@ -4,6 +4,7 @@
 
 #include "cases/body_surface_pressure.h"
 #include "core/interruption.h"
+#include "core/mesh_geometry.h"
 #include "core/units.h"
 #include "io/csv_table.h"
 #include "io/paraview_view_script.h"
@@ -200,7 +201,9 @@ RunResult run_scenario(Scenario& scenario, const BackendFactory& make_backend,
       if (write_garment) {
         char stem[64];
         std::snprintf(stem, sizeof stem, "garment_%04zu", step);
-        SurfaceVtu garment = garment_vtu(scenario.mesh, m.state, m.field, m.alpha);
+        SurfaceVtu garment =
+            garment_vtu(scenario.mesh, m.state, m.field,
+                        vertex_principal_stretches(scenario.mesh, m.state.positions_m), m.alpha);
         for (const auto& [array_name, values] : backend->extra_point_data())
           garment.add_point_scalar(array_name, values);
         // The first rank lists the step only after its own piece and the .pvtu header are on

@@ -11,10 +11,10 @@ namespace tightfit {
 MorphingMeshBody::MorphingMeshBody(TriangleSurface base, std::vector<Vec3> target_vertices_m,
                                    const MeshBodyOptions& options, const BodyScaling& scaling,
                                    const std::string& what)
-    : base_(base.vertices_m),
+    : ChangingMeshBody(std::move(base), options, what),
+      base_(mesh_.surface().vertices_m),
       target_(std::move(target_vertices_m)),
-      scaling_(scaling),
-      mesh_(std::move(base), options, what) {
+      scaling_(scaling) {
   if (!target_.empty() && target_.size() != base_.size())
     throw BodyMeshError(what + ": the morph target has " + std::to_string(target_.size()) +
                         " vertices, the base " + std::to_string(base_.size()));

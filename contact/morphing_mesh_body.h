@@ -3,7 +3,7 @@
 // or an axis (a body that grows, as the paper's cylinder does). docs/bodies.md "Morphing".
 #pragma once
 
-#include "contact/mesh_body.h"
+#include "contact/changing_mesh_body.h"
 
 #include <memory>
 #include <string>
@@ -18,7 +18,7 @@ struct BodyScaling {
   Vec3 axis = Vec3::UnitZ();     // (about an axis) distances from it scale, lengths along it do not
 };
 
-class MorphingMeshBody final : public RigidBody {
+class MorphingMeshBody final : public ChangingMeshBody<RigidBody> {
  public:
   // `target_vertices_m` (empty: no blend) must be as many as the base's vertices.
   MorphingMeshBody(TriangleSurface base, std::vector<Vec3> target_vertices_m,
@@ -26,15 +26,6 @@ class MorphingMeshBody final : public RigidBody {
                    const std::string& what = "body mesh");
 
   std::string name() const override { return "morphing mesh"; }
-  SurfacePoint query(const Vec3& x) const override { return mesh_.query(x); }
-  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override {
-    return mesh_.query_near(x, near);
-  }
-  SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override {
-    return mesh_.query_parts(x, near, parts);
-  }
-  DisplayMesh display_mesh() const override { return mesh_.display_mesh(); }
-  Vec3 surface_point_m(const SurfaceLocation& l) const override { return mesh_.surface_point_m(l); }
 
   // The shape (1 - t) base + t target, scaled by `scale` (> 0) as BodyScaling says; the BVH
   // is rebuilt. Throws std::invalid_argument for t outside [0, 1] (or t != 0 without a
@@ -42,13 +33,11 @@ class MorphingMeshBody final : public RigidBody {
   void set_morph(double t, double scale = 1.0);
   double blend() const { return t_; }
   double scale() const { return scale_; }
-  const MeshBody& mesh() const { return mesh_; }
 
  private:
   std::vector<Vec3> base_, target_;
   BodyScaling scaling_;
   double t_ = 0.0, scale_ = 1.0;
-  MeshBody mesh_;
 };
 
 // Reads, imports and checks both files (the same import options for both) and checks that

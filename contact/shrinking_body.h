@@ -1,6 +1,6 @@
 // A body the dressing (massspring/dressing.h) starts shrunk inside the open garment and grows
 // back to its own shape: about a point or an axis (scaled_body.h), or about its skeleton
-// (skeleton_shrunk_body.h). docs/dressing.md "The body shrunk and grown back".
+// (skeleton_shrunk_body.h). docs/arrangement.md "The body shrunk about its skeleton".
 #pragma once
 
 #include "contact/rigid_body.h"

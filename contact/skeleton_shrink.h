@@ -1,4 +1,4 @@
-// A body mesh shrunk about its skeleton (docs/dressing.md "The body shrunk about its
+// A body mesh shrunk about its skeleton (docs/arrangement.md "The body shrunk about its
 // skeleton"): each vertex moves towards the axis of the body part it belongs to (the torso's,
 // an arm's, a leg's), its distance from that axis times the scale, its position along the axis
 // kept, so that the limbs thin about their own axes and open room between them and the torso.

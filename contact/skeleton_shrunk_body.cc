@@ -8,8 +8,9 @@ namespace tightfit {
 SkeletonShrunkBody::SkeletonShrunkBody(TriangleSurface surface, std::vector<SkeletonBone> bones,
                                        double blend_m, double step, double arm_raise_per_unit,
                                        const Vec3& up, bool shorten_torso)
-    : shrink_(surface.vertices_m, std::move(bones), blend_m),
-      mesh_(std::move(surface), MeshBodyOptions{}, "body mesh shrunk about its skeleton"),
+    : ChangingMeshBody(std::move(surface), MeshBodyOptions{},
+                       "body mesh shrunk about its skeleton"),
+      shrink_(mesh_.surface().vertices_m, std::move(bones), blend_m),
       step_(step) {
   if (!(step > 0)) throw std::invalid_argument("a skeleton shrink's scale step must be positive");
   shrink_.set_arm_raise(arm_raise_per_unit, up);

@@ -5,13 +5,13 @@
 // dozen rebuilds; scale() is the surface's.
 #pragma once
 
-#include "contact/mesh_body.h"
+#include "contact/changing_mesh_body.h"
 #include "contact/shrinking_body.h"
 #include "contact/skeleton_shrink.h"
 
 namespace tightfit {
 
-class SkeletonShrunkBody final : public ShrinkingBody {
+class SkeletonShrunkBody final : public ChangingMeshBody<ShrinkingBody> {
  public:
   // `surface` is the whole body's mesh (closed); throws as SkeletonShrink and MeshBody do.
   // `arm_raise_per_unit`: SkeletonShrink::set_arm_raise's rate (radians per unit of 1 - s),
@@ -26,19 +26,9 @@ class SkeletonShrunkBody final : public ShrinkingBody {
   const SkeletonShrink& shrink() const { return shrink_; }
 
   std::string name() const override { return "mesh (shrunk about its skeleton)"; }
-  SurfacePoint query(const Vec3& x) const override { return mesh_.query(x); }
-  SurfacePoint query_near(const Vec3& x, NearFaces& near) const override {
-    return mesh_.query_near(x, near);
-  }
-  SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override {
-    return mesh_.query_parts(x, near, parts);
-  }
-  DisplayMesh display_mesh() const override { return mesh_.display_mesh(); }
-  Vec3 surface_point_m(const SurfaceLocation& l) const override { return mesh_.surface_point_m(l); }
 
  private:
   SkeletonShrink shrink_;
-  MeshBody mesh_;
   double step_;
   double scale_ = 1.0;
 };

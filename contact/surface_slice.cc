@@ -97,6 +97,8 @@ SliceLoop slice_surface(const TriangleSurface& surface, const Vec3& axis, double
   SliceLoop best;
   bool best_encloses = false;
   double best_distance = 0.0;
+  std::vector<std::vector<Vec3>> loops;
+  std::size_t best_index = 0;
   std::map<EdgeKey, bool> used;
   for (const auto& [start, ignored] : links) {
     if (used[start]) continue;
@@ -114,6 +116,7 @@ SliceLoop slice_surface(const TriangleSurface& surface, const Vec3& axis, double
       current = *step;
     }
     if (loop.size() < 3) continue;
+    loops.push_back(loop);
     SliceLoop l;
     l.n_points = static_cast<int>(loop.size());
     std::vector<Vec2> flat;
@@ -142,12 +145,37 @@ SliceLoop slice_surface(const TriangleSurface& surface, const Vec3& axis, double
       best = l;
       best_encloses = inside;
       best_distance = distance;
+      best_index = loops.size() - 1;
     }
   }
   if (best.n_points == 0)
     throw std::invalid_argument("slice: the plane at height " + std::to_string(height_m) +
                                 " m cuts no closed loop");
+  best.plane_normal = a;
+  best.points_m = loops[best_index];
+  for (std::size_t k = 0; k < loops.size(); ++k)
+    if (k != best_index)
+      for (const Vec3& x : loops[k])
+        best.other_loops_distance_m =
+            std::min(best.other_loops_distance_m, (x - best.centroid_m).norm());
   return best;
+}
+
+double boundary_distance_m(const SliceLoop& loop, const Vec3& direction) {
+  // A segment p q (relative to the centroid c) crosses the ray's line where its component along
+  // e = normal x d changes sign; the crossing's component along d is its distance on the ray.
+  const std::vector<Vec3>& points = loop.points_m;
+  const Vec3 e = loop.plane_normal.cross(direction);
+  double farthest = -1.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 p = points[i] - loop.centroid_m;
+    const Vec3 q = points[(i + 1) % points.size()] - loop.centroid_m;
+    const double pe = p.dot(e), qe = q.dot(e);
+    if ((pe > 0) == (qe > 0)) continue;  // both on one side of the ray's line
+    const double t = (p + pe / (pe - qe) * (q - p)).dot(direction);
+    farthest = std::max(farthest, t);
+  }
+  return farthest > 0 ? farthest : loop.reach_m;
 }
 
 }  // namespace tightfit

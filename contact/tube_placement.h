@@ -27,6 +27,9 @@ std::vector<Vec3> place_tube_round_axis(const Garment& garment, const Simulation
 // The same round a limb of the body `surface`: each ring centred on the centroid of the body's
 // section in its plane (normal to `axis`, the loop round the axis; contact/surface_slice.h) and
 // `clearance_m` outside that section's farthest point, so a tube follows a bent leg or arm.
+// Where that circle would come nearer than `clearance_m` to another loop of the plane (the
+// other thigh near the crotch), the ring is the section offset by `clearance_m` along each
+// ray from its centroid instead.
 // Throws std::invalid_argument naming the ring's height when its plane misses the body.
 std::vector<Vec3> place_tube_round_limb(const Garment& garment, const SimulationMesh& mesh,
                                         const Vec3& centre_m, const Vec3& axis,

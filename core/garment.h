@@ -31,7 +31,7 @@ struct Panel {
   // layout position = rest position + offset.
   Vec2 layout_offset_m = Vec2::Zero();
   // Where the panel lies in 3D as its pattern file arranges it round the file's own body
-  // (GarmentCode's panels; docs/dressing.md "Arrangement from the pattern file"): the rest
+  // (GarmentCode's panels; docs/arrangement.md "Arrangement from the pattern file"): the rest
   // position (x, y) goes to rotation (x, y, 0) + translation, in the file's frame (its up axis,
   // metres). Absent when the file does not say.
   struct Arrangement {

@@ -100,8 +100,8 @@ Mat32 deformation_gradient(const std::array<Vec2, 3>& rest, const Vec3& x0, cons
   return dx * dX.inverse();
 }
 
-std::vector<std::array<double, 2>> vertex_principal_stretches(const SimulationMesh& mesh,
-                                                              const std::vector<Vec3>& x) {
+PrincipalStretches vertex_principal_stretches(const SimulationMesh& mesh,
+                                              const std::vector<Vec3>& x) {
   std::vector<std::array<double, 2>> stretches(mesh.n_vertices, {0.0, 0.0});
   std::vector<double> weight(mesh.n_vertices, 0.0);
   const auto rest_area = rest_triangle_areas(mesh);

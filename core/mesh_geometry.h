@@ -44,9 +44,12 @@ std::vector<Vec3> vertex_normals(const std::vector<Triangle>& triangles,
 Mat32 deformation_gradient(const std::array<Vec2, 3>& rest, const Vec3& x0, const Vec3& x1,
                            const Vec3& x2);
 
-// Principal stretches (largest, smallest) at each vertex: the eigenvalues of sqrt(C) of the
-// adjacent triangles, averaged with their rest areas as weights.
-std::vector<std::array<double, 2>> vertex_principal_stretches(const SimulationMesh& mesh,
-                                                              const std::vector<Vec3>& positions_m);
+// Principal stretches (largest, smallest) at each vertex.
+using PrincipalStretches = std::vector<std::array<double, 2>>;
+
+// The eigenvalues of sqrt(C) of the adjacent triangles, averaged with their rest areas as
+// weights.
+PrincipalStretches vertex_principal_stretches(const SimulationMesh& mesh,
+                                              const std::vector<Vec3>& positions_m);
 
 }  // namespace tightfit

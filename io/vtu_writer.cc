@@ -152,7 +152,8 @@ void SurfaceVtu::write(const std::string& path) const {
 }
 
 SurfaceVtu garment_vtu(const SimulationMesh& mesh, const SurfaceState& state,
-                       const PressureField& field, double alpha) {
+                       const PressureField& field, const PrincipalStretches& stretches,
+                       double alpha) {
   if (static_cast<int>(state.size()) != mesh.n_vertices)
     throw std::invalid_argument("VTU output: the surface state has " +
                                 std::to_string(state.size()) + " vertices, the mesh " +
@@ -166,16 +167,17 @@ SurfaceVtu garment_vtu(const SimulationMesh& mesh, const SurfaceState& state,
   vtu.add_point_flag("contact", field.contact);
   vtu.add_point_vector("normal", field.normal);
 
-  const auto stretches = vertex_principal_stretches(mesh, state.positions_m);
-  std::vector<double> largest, smallest;
-  largest.reserve(stretches.size());
-  smallest.reserve(stretches.size());
-  for (const auto& s : stretches) {
-    largest.push_back(s[0]);
-    smallest.push_back(s[1]);
+  if (!stretches.empty()) {
+    std::vector<double> largest, smallest;
+    largest.reserve(stretches.size());
+    smallest.reserve(stretches.size());
+    for (const auto& s : stretches) {
+      largest.push_back(s[0]);
+      smallest.push_back(s[1]);
+    }
+    vtu.add_point_scalar("stretch_max", largest);
+    vtu.add_point_scalar("stretch_min", smallest);
   }
-  vtu.add_point_scalar("stretch_max", largest);
-  vtu.add_point_scalar("stretch_min", smallest);
 
   // A backend that does not compute a quantity leaves its vector empty.
   if (!state.internal_force_N.empty())
@@ -190,8 +192,9 @@ SurfaceVtu garment_vtu(const SimulationMesh& mesh, const SurfaceState& state,
 }
 
 void write_garment_vtu(const std::string& path, const SimulationMesh& mesh,
-                       const SurfaceState& state, const PressureField& field, double alpha) {
-  garment_vtu(mesh, state, field, alpha).write(path);
+                       const SurfaceState& state, const PressureField& field,
+                       const PrincipalStretches& stretches, double alpha) {
+  garment_vtu(mesh, state, field, stretches, alpha).write(path);
 }
 
 void write_body_vtu(const std::string& path, const DisplayMesh& body) {

@@ -3,10 +3,12 @@
 // A SurfaceVtu collects points, triangles, point-data arrays and field data, and writes them in
 // one go (binary appended data, zlib-compressed). garment_vtu() fills one with the garment of a
 // load step and its standard arrays; callers add their own arrays (a backend's contact
-// traction, a cross-backend difference) before writing.
+// traction, a cross-backend difference) before writing. The writer computes nothing: every
+// array is a quantity it is handed.
 #pragma once
 
 #include "core/garment.h"
+#include "core/mesh_geometry.h"
 #include "core/pressure_field.h"
 #include "core/surface_state.h"
 #include "core/types.h"
@@ -81,17 +83,20 @@ class SurfaceVtu {
 //   pressure_Pa, normal_force_N, friction_traction_Pa (tangential contact force / area),
 //   vertex_area_m2, contact (0/1), normal (unit, away from the body)
 //     from `field`;
-//   stretch_max, stretch_min: principal stretches (vertex_principal_stretches);
+//   stretch_max, stretch_min: from `stretches` (core's vertex_principal_stretches), unless
+//     it is empty;
 //   internal_force_N, contact_force_N (3-vectors), gap_m: from `state` when it holds them
 //     (an empty vector is skipped, a vector of another size is an error).
 // Field data: vertex_area_definition (to_string of field.area_definition) and alpha (the
 // load step's r / R0).
 SurfaceVtu garment_vtu(const SimulationMesh& mesh, const SurfaceState& state,
-                       const PressureField& field, double alpha);
+                       const PressureField& field, const PrincipalStretches& stretches,
+                       double alpha);
 
 // Shorthand for garment_vtu(...).write(path).
 void write_garment_vtu(const std::string& path, const SimulationMesh& mesh,
-                       const SurfaceState& state, const PressureField& field, double alpha);
+                       const SurfaceState& state, const PressureField& field,
+                       const PrincipalStretches& stretches, double alpha);
 
 // A body's display surface, without arrays.
 void write_body_vtu(const std::string& path, const DisplayMesh& body);

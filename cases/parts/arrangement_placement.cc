@@ -2,7 +2,7 @@
 // read off the body (cases/garment_arrangement.h): each panel assigned to a side of the torso
 // by the case's short list or its name, wrapped round the torso's axis at a clearance from its
 // girths, its side seam's top under the armpits; optionally the pattern scaled round the body
-// to an ease stated against one of the body's girths (docs/dressing.md).
+// to an ease stated against one of the body's girths (docs/arrangement.md).
 #include "body/body_measurements.h"
 #include "cases/coarse_dressing.h"
 #include "cases/failed_dressing_output.h"
@@ -123,7 +123,7 @@ PartEntry<PlacementMaker> arrangement_placement_entry() {
   e.description =
       "the dressing with its start read off the body's landmarks: each panel on a side of the "
       "torso, wrapped round the torso's axis, its side seam under the armpits; optionally "
-      "fitted to an ease against the body's girth (docs/dressing.md).";
+      "fitted to an ease against the body's girth (docs/arrangement.md).";
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_text("Body parts", "",
                      "Where each panel goes: 'PANEL: PART, ...' with PART one of torso front, "

@@ -2,7 +2,7 @@
 // the file's own body (GarmentCode's translation and rotation), moved onto the case's body by
 // the landmarks (the reference body's torso onto the body's: root, length and girths), then
 // sewn onto the body by the dressing stage (massspring/dressing.h) while the body grows back
-// from a start shrunk about its skeleton, each part about its own axis (docs/dressing.md
+// from a start shrunk about its skeleton, each part about its own axis (docs/arrangement.md
 // "Arrangement from the pattern file").
 #include "body/garment_arrangement.h"
 #include "cases/failed_dressing_output.h"
@@ -50,7 +50,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
   e.description =
       "the panels unsewn and flat where the pattern file arranges them (GarmentCode), moved onto "
       "the body by its landmarks, sewn by seam springs while the body grows from a start shrunk "
-      "about its skeleton (docs/dressing.md).";
+      "about its skeleton (docs/arrangement.md).";
   e.declare_parameters = [](ParameterTree& prm) {
     prm.declare_selection("Pattern up axis", "+y", up_axes,
                           "The pattern file's up direction (GarmentCode: +y, its front +z): "

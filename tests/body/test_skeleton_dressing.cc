@@ -1,4 +1,4 @@
-// Dressing round a skeleton (docs/dressing.md "Arrangement from the pattern file", "The body
+// Dressing round a skeleton (docs/arrangement.md "Arrangement from the pattern file", "The body
 // shrunk about its skeleton"): a person built of cylinders (tests/body/synthetic_body.h), the
 // bones from its own landmarks (body/garment_arrangement.h), and a garment of three tubes and
 // two trouser legs, each tube two flat panels placed in front of and behind its body part as a

@@ -1,5 +1,5 @@
 // The automatic arrangement (cases/garment_arrangement.h, Placement/Kind = arrangement;
-// docs/dressing.md, "Any body: the arrangement") on a person built from cylinders and spheres
+// docs/arrangement.md, "Any body: the arrangement") on a person built from cylinders and spheres
 // (tests/body/synthetic_body.h: an elliptic torso of semi-axes 0.16 m across and 0.11 m deep,
 // its armpit height known by construction) with a two-panel torso garment: every panel starts
 // outside the shrunk torso, its side seams' tops under the armpits; the ease against the body

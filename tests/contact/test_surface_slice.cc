@@ -10,6 +10,7 @@
 #include "tests/contact/body_mesh_files.h"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <stdexcept>
@@ -22,6 +23,16 @@ TriangleSurface z_up(const PolygonMesh& mesh, const Vec3& shift = Vec3::Zero()) 
   options.up_axis = "+z";
   options.translation_m = shift;
   return import_surface(mesh, options);
+}
+
+// Two surfaces as one (two legs side by side).
+TriangleSurface merged(const TriangleSurface& a, const TriangleSurface& b) {
+  TriangleSurface both = a;
+  const int offset = static_cast<int>(a.vertices_m.size());
+  both.vertices_m.insert(both.vertices_m.end(), b.vertices_m.begin(), b.vertices_m.end());
+  for (Triangle t : b.triangles)
+    both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  return both;
 }
 
 // Perimeter and area of the regular n-gon inscribed in a circle of radius r.
@@ -60,17 +71,38 @@ TEST(SurfaceSlice, PicksTheLegRoundThePoint) {
       z_up(testing::revolution_surface({0.0, 0.4}, {0.05, 0.05}, 32), Vec3(0.1, 0, 0));
   const TriangleSurface b =
       z_up(testing::revolution_surface({0.0, 0.4}, {0.06, 0.06}, 32), Vec3(-0.1, 0, 0));
-  TriangleSurface both = a;
-  const int offset = static_cast<int>(a.vertices_m.size());
-  both.vertices_m.insert(both.vertices_m.end(), b.vertices_m.begin(), b.vertices_m.end());
-  for (Triangle t : b.triangles)
-    both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const TriangleSurface both = merged(a, b);
   const SliceLoop right = slice_surface(both, Vec3::UnitZ(), 0.2, Vec3(0.12, 0.01, 0));
   const SliceLoop left = slice_surface(both, Vec3::UnitZ(), 0.2, Vec3(-0.3, 0, 0));  // outside both
   EXPECT_NEAR(right.perimeter_m, polygon_perimeter(0.05, 32), 1e-12);
   EXPECT_NEAR(right.centroid_m.x(), 0.1, 1e-12);
   EXPECT_NEAR(left.perimeter_m, polygon_perimeter(0.06, 32), 1e-12);
   EXPECT_NEAR(left.centroid_m.x(), -0.1, 1e-12);
+}
+
+// Along a ray from the centroid of a regular n-gon section the boundary lies at the circumradius
+// towards a corner and at r cos(pi / n) towards the middle of an edge; the other leg's nearest
+// point is its distance from the axis less its radius.
+TEST(SurfaceSlice, BoundaryAlongARayAndTheOtherLoop) {
+  const int n = 8;
+  const TriangleSurface a =
+      z_up(testing::revolution_surface({0.0, 0.4}, {0.05, 0.05}, n), Vec3(0.1, 0, 0));
+  const TriangleSurface b =
+      z_up(testing::revolution_surface({0.0, 0.4}, {0.06, 0.06}, 64), Vec3(-0.1, 0, 0));
+  const TriangleSurface both = merged(a, b);
+  const SliceLoop right = slice_surface(both, Vec3::UnitZ(), 0.2, Vec3(0.1, 0, 0));
+  // The section's corners lie where the mesh's vertices do: find one's direction.
+  Vec3 corner = right.points_m.front() - right.centroid_m;
+  for (const Vec3& p : right.points_m)
+    if ((p - right.centroid_m).norm() > corner.norm()) corner = p - right.centroid_m;
+  const Vec3 to_corner = corner.normalized();
+  const Vec3 to_edge_middle = Eigen::AngleAxisd(M_PI / n, Vec3::UnitZ()) * to_corner;
+  EXPECT_NEAR(boundary_distance_m(right, to_corner), 0.05, 1e-12);
+  EXPECT_NEAR(boundary_distance_m(right, to_edge_middle), 0.05 * std::cos(M_PI / n), 1e-12);
+  // b's 64-gon comes nearest at its corner on the x axis: 0.2 - 0.06.
+  EXPECT_NEAR(right.other_loops_distance_m, 0.2 - 0.06, 1e-12);
+  const SliceLoop alone = slice_surface(a, Vec3::UnitZ(), 0.2, Vec3(0.1, 0, 0));
+  EXPECT_TRUE(std::isinf(alone.other_loops_distance_m));
 }
 
 TEST(SurfaceSlice, PlaneMissingTheBodyIsRefused) {
@@ -104,6 +136,30 @@ TEST(TubeRoundLimb, RingsCentreOnTheSections) {
   for (const Vec3& p : x) {
     EXPECT_NEAR(std::hypot(p.x() - 0.02, p.y() + 0.01), 0.06, 1e-12);
     EXPECT_LE(std::abs(p.z()), 0.1 + 1e-12);
+  }
+}
+
+// Two legs 12 mm apart: a circle 1 cm outside one leg's section would reach into the other, so
+// each ring is the section offset by the clearance: every vertex 1 cm outside its own leg (to
+// the 64-gon's sagitta) and clear of the other.
+TEST(TubeRoundLimb, RingsBesideAnotherLegFollowTheSection) {
+  const int n = 64;
+  const double r = 0.05, half_gap = 0.006, clearance = 0.01;
+  const TriangleSurface a =
+      z_up(testing::revolution_surface({-0.2, 0.3}, {r, r}, n), Vec3(r + half_gap, 0, 0));
+  const TriangleSurface b =
+      z_up(testing::revolution_surface({-0.2, 0.3}, {r, r}, n), Vec3(-r - half_gap, 0, 0));
+  const TriangleSurface both = merged(a, b);
+  const Garment tube = make_tube_garment("leg", 0.1, 0.2, 2, MeshSpacing{0.01, 0.02});
+  const SimulationMesh mesh = weld(tube);
+  const std::vector<Vec3> x =
+      place_tube_round_limb(tube, mesh, Vec3(r + half_gap, 0, 0), Vec3::UnitZ(), both, clearance);
+  const double sagitta = r * (1 - std::cos(M_PI / n));
+  for (const Vec3& p : x) {
+    const double from_own = std::hypot(p.x() - r - half_gap, p.y());
+    EXPECT_LE(from_own, r + clearance + 1e-12);
+    EXPECT_GE(from_own, r + clearance - sagitta - 1e-12);
+    EXPECT_GT(std::hypot(p.x() + r + half_gap, p.y()), r);  // outside the other leg
   }
 }
 

@@ -1,10 +1,12 @@
 // CSV tables: rows on disk before the writer goes away, numbers that read back, clear errors.
+#include "io/csv_reader.h"
 #include "io/csv_table.h"
 #include "scratch_dir.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 
 namespace tightfit {
@@ -82,6 +84,53 @@ TEST(CsvTable, UnopenablePathThrowsNamingIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
   }
+}
+
+// The reader against text written by hand in the format above (not by the writer alone): quoted
+// commas and doubled quotes, a missing number, infinities, a CRLF line end, a row cut short.
+TEST_F(CsvFile, ReaderGivesBackFieldsAndNumbers) {
+  const std::string file = path("regions.csv");
+  {
+    std::ofstream out(file);
+    out << "step,region,p_mean_Pa\n"
+           "1,\"bust, left\",250.5\n"
+           "1,\"said \"\"tight\"\"\",\r\n"
+           "\n"
+           "2,waist,inf\n"
+           "3,cut short\n";
+  }
+  const std::optional<CsvRows> csv = CsvRows::read(file);
+  ASSERT_TRUE(csv.has_value());
+  EXPECT_EQ(csv->columns(), (std::vector<std::string>{"step", "region", "p_mean_Pa"}));
+  ASSERT_EQ(csv->n_rows(), 3u);
+  const std::size_t region = csv->column("region"), mean = csv->column("p_mean_Pa");
+  EXPECT_EQ(csv->text(0, region), "bust, left");
+  EXPECT_EQ(csv->text(1, region), "said \"tight\"");
+  EXPECT_DOUBLE_EQ(csv->number(0, mean), 250.5);
+  EXPECT_TRUE(std::isnan(csv->number(1, mean)));
+  EXPECT_EQ(csv->number(2, mean), std::numeric_limits<double>::infinity());
+  EXPECT_DOUBLE_EQ(csv->number(2, csv->column("step")), 2.0);
+}
+
+TEST_F(CsvFile, ReaderNamesTheFileTheRowAndTheColumn) {
+  const std::string file = path("bad.csv");
+  {
+    std::ofstream out(file);
+    out << "step,p_mean_Pa\n1,12 Pa\n";
+  }
+  const std::optional<CsvRows> csv = CsvRows::read(file);
+  ASSERT_TRUE(csv.has_value());
+  try {
+    csv->number(0, csv->column("p_mean_Pa"));
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file), std::string::npos) << what;
+    EXPECT_NE(what.find("row 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("p_mean_Pa"), std::string::npos) << what;
+  }
+  EXPECT_THROW(csv->column("p_peak_Pa"), std::runtime_error);
+  EXPECT_FALSE(CsvRows::read(path("missing.csv")).has_value());
 }
 
 }  // namespace

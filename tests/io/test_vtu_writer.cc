@@ -60,6 +60,10 @@ struct StretchedSquare {
     field.normal.assign(4, rotation * Vec3::UnitZ());
     field.contact = {1, 1, 0, 0};
   }
+
+  PrincipalStretches stretches() const {
+    return vertex_principal_stretches(mesh, state.positions_m);
+  }
 };
 
 void expect_scalars(vtkUnstructuredGrid* grid, const char* name, const std::vector<double>& want) {
@@ -84,7 +88,7 @@ void expect_vectors(vtkUnstructuredGrid* grid, const char* name, const std::vect
 TEST_F(VtuWriter, GarmentFileHoldsEveryNamedArrayWithItsValues) {
   const StretchedSquare s;
   const std::string file = path("garment_0003.vtu");
-  write_garment_vtu(file, s.mesh, s.state, s.field, 1.35);
+  write_garment_vtu(file, s.mesh, s.state, s.field, s.stretches(), 1.35);
 
   auto reader = read_vtu(file);
   vtkUnstructuredGrid* grid = reader->GetOutput();
@@ -122,7 +126,8 @@ TEST_F(VtuWriter, GarmentFileHoldsEveryNamedArrayWithItsValues) {
   EXPECT_EQ(contact->GetDataType(), VTK_UNSIGNED_CHAR);
   expect_scalars(grid, "contact", {1, 1, 0, 0});
 
-  // The stretches come from the deformation itself: 1.2 and 0.9 everywhere.
+  // The stretches handed to the writer come from the deformation itself: 1.2 and 0.9
+  // everywhere.
   vtkDataArray* largest = grid->GetPointData()->GetArray("stretch_max");
   vtkDataArray* smallest = grid->GetPointData()->GetArray("stretch_min");
   ASSERT_NE(largest, nullptr);
@@ -145,7 +150,7 @@ TEST_F(VtuWriter, GarmentFileHoldsEveryNamedArrayWithItsValues) {
 TEST_F(VtuWriter, DataIsBinaryAppendedAndCompressed) {
   const StretchedSquare s;
   const std::string file = path("garment.vtu");
-  write_garment_vtu(file, s.mesh, s.state, s.field, 1.0);
+  write_garment_vtu(file, s.mesh, s.state, s.field, s.stretches(), 1.0);
   const std::string text = read_text(file);
   EXPECT_NE(text.find("format=\"appended\""), std::string::npos);
   EXPECT_NE(text.find("<AppendedData encoding=\"raw\">"), std::string::npos);
@@ -154,7 +159,7 @@ TEST_F(VtuWriter, DataIsBinaryAppendedAndCompressed) {
 
 TEST_F(VtuWriter, CallerArraysAreWrittenBesideTheStandardOnes) {
   const StretchedSquare s;
-  SurfaceVtu vtu = garment_vtu(s.mesh, s.state, s.field, 1.8);
+  SurfaceVtu vtu = garment_vtu(s.mesh, s.state, s.field, s.stretches(), 1.8);
   const std::vector<double> difference = {0.5, -0.25, 1e-9, -3e7};
   const std::vector<Vec3> traction = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1.5, -2.5, 3.5}};
   vtu.add_point_scalar("pressure_difference_Pa", difference);
@@ -179,12 +184,26 @@ TEST_F(VtuWriter, StateWithoutOptionalVectorsWritesTheRest) {
   s.state.contact_force_N.clear();
   s.state.gap_m.clear();
   const std::string file = path("garment.vtu");
-  write_garment_vtu(file, s.mesh, s.state, s.field, 1.0);
+  write_garment_vtu(file, s.mesh, s.state, s.field, s.stretches(), 1.0);
   auto reader = read_vtu(file);
   vtkUnstructuredGrid* grid = reader->GetOutput();
   EXPECT_EQ(grid->GetPointData()->GetArray("gap_m"), nullptr);
   EXPECT_EQ(grid->GetPointData()->GetArray("contact_force_N"), nullptr);
   expect_scalars(grid, "pressure_Pa", s.field.pressure_Pa);
+}
+
+TEST_F(VtuWriter, StretchesAreWrittenOnlyWhenHanded) {
+  const StretchedSquare s;
+  const std::string file = path("garment.vtu");
+  write_garment_vtu(file, s.mesh, s.state, s.field, PrincipalStretches{}, 1.0);
+  auto reader = read_vtu(file);
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  EXPECT_EQ(grid->GetPointData()->GetArray("stretch_max"), nullptr);
+  EXPECT_EQ(grid->GetPointData()->GetArray("stretch_min"), nullptr);
+  expect_scalars(grid, "pressure_Pa", s.field.pressure_Pa);
+  // Handed stretches of another size are refused, as every other array.
+  const PrincipalStretches short_list(3, {1.0, 1.0});
+  EXPECT_THROW(garment_vtu(s.mesh, s.state, s.field, short_list, 1.0), std::invalid_argument);
 }
 
 TEST(SurfaceVtu, RejectsWrongSizesRepeatedNamesAndBadTriangles) {

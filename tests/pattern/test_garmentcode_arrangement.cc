@@ -1,5 +1,5 @@
 // A GarmentCode panel's 3D arrangement carried to the meshed panel (pattern_garment.h,
-// Garment::Panel::arrangement; docs/dressing.md "Arrangement from the pattern file"). In the
+// Garment::Panel::arrangement; docs/arrangement.md "Arrangement from the pattern file"). In the
 // jumpsuit's file the left and right front torso panels meet at the centre front, and the two
 // back ones at the centre back, edge on edge (GarmentCode places them 0.0 cm apart): every
 // meshed vertex pair those seams join must then coincide in 3D, whatever the reader did to the
