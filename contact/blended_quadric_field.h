@@ -55,8 +55,8 @@ class BlendedQuadricField {
   // vertex whose normal is more than 120 degrees from m adds nothing, one within 90 degrees
   // adds fully, so the other side of a thin gap (the inner thigh across the crotch) never
   // enters the blend. The vertices are found in a uniform grid whose cells list the vertices
-  // whose support reaches into them (built with the field), so a query scans a few tens of
-  // vertices, the same ones wherever on the surface x lies.
+  // whose support reaches into them (built with the field): a query scans one cell's list
+  // (about 100 vertices on the MakeHuman female, 27 of which add), whichever face is closest.
   Value evaluate(const Vec3& x_m, const Vec3& reference_normal,
                  const Mat3& reference_normal_derivative) const;
 
