@@ -23,6 +23,9 @@ class ChangingMeshBody : public Interface {
   }
   DisplayMesh display_mesh() const override { return mesh_.display_mesh(); }
   Vec3 surface_point_m(const SurfaceLocation& l) const override { return mesh_.surface_point_m(l); }
+  Vec3 surface_point_near_m(const SurfaceLocation& l, const NearFaces* near) const override {
+    return mesh_.surface_point_near_m(l, near);
+  }
 
   const MeshBody& mesh() const { return mesh_; }
 

@@ -5,10 +5,10 @@
 namespace tightfit {
 
 TangentialOffset tangential_offset(const RigidBody& body, const Vec3& x, const SurfacePoint& at_x,
-                                   const SurfaceLocation& anchor) {
+                                   const SurfaceLocation& anchor, const NearFaces* near) {
   const Vec3& n = at_x.outward_normal;
   const Mat3& dn_dx = at_x.normal_derivative_per_m;
-  const Vec3 d = x - body.surface_point_m(anchor);
+  const Vec3 d = x - body.surface_point_near_m(anchor, near);
   TangentialOffset offset;
   offset.u = d - n.dot(d) * n;
   // du/dx = P - n d^T dn/dx - (n.d) dn/dx, from u = d - n (n.d) with dd/dx = I.
@@ -47,7 +47,7 @@ FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const Su
     return r;
   }
   const double k = law.tangential_penalty_N_per_m, mu = law.friction_coefficient;
-  const TangentialOffset offset = tangential_offset(body, x, at_x, anchor);
+  const TangentialOffset offset = tangential_offset(body, x, at_x, anchor, near);
   const double slip = offset.u.norm(), limit = mu * normal_force_N;
   if (k * slip <= limit) {
     FrictionResponse r = sticking_friction(offset, k);

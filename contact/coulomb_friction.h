@@ -40,8 +40,9 @@ struct TangentialOffset {
   Vec3 u = Vec3::Zero();
   Mat3 du_dx = Mat3::Zero();
 };
+// `near` (when given) is x's kept faces, from which a mesh body finds the anchor's point.
 TangentialOffset tangential_offset(const RigidBody& body, const Vec3& x_m, const SurfacePoint& at_x,
-                                   const SurfaceLocation& anchor);
+                                   const SurfaceLocation& anchor, const NearFaces* near = nullptr);
 
 // The sticking branch of the return mapping on its own: f = -k_t u, -df/dx = k_t du/dx.
 FrictionResponse sticking_friction(const TangentialOffset& offset,

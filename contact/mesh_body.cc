@@ -221,7 +221,7 @@ SurfacePoint MeshBody::faceted_answer(const Vec3& x, const TriangleBvh::Hit& hit
   return s;
 }
 
-Vec3 MeshBody::surface_point_m(const SurfaceLocation& location) const {
+Vec3 MeshBody::surface_point_near_m(const SurfaceLocation& location, const NearFaces* near) const {
   const Triangle& tri = surface_.triangles.at(location.face);
   const Vec3& b = location.coordinates;
   const auto& v = surface_.vertices_m;
@@ -233,7 +233,7 @@ Vec3 MeshBody::surface_point_m(const SurfaceLocation& location) const {
   // smooth_location, by Newton's method on g(flat + t N) - skin (dg/dt = grad g . N).
   double t = 0.0;
   for (int iteration = 0; iteration < 8; ++iteration) {
-    SurfacePoint s = faceted_query(flat + t * normal);
+    SurfacePoint s = faceted_near(flat + t * normal, near);
     smooth_field(flat + t * normal, s);
     const double residual = s.signed_distance_m - skin_offset_m_;
     const double slope = s.gap_gradient.dot(normal);

@@ -56,7 +56,12 @@ class MeshBody final : public RigidBody {
   // faceted answer's closest point and location, and every dn/dx, come with the rest).
   SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override;
   DisplayMesh display_mesh() const override;
-  Vec3 surface_point_m(const SurfaceLocation& location) const override;
+  Vec3 surface_point_m(const SurfaceLocation& location) const override {
+    return surface_point_near_m(location, nullptr);
+  }
+  // The smooth surface's Newton steps out along the normal take their flat answers from
+  // `near`'s faces where the steps lie within their reach (faceted_near), else from the tree.
+  Vec3 surface_point_near_m(const SurfaceLocation& location, const NearFaces* near) const override;
 
   // New vertex positions, same triangles (a morph or a growth step): the faces' areas and the
   // volume's sign are checked again (check_body_geometry), the normals recomputed and the BVH

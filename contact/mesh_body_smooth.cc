@@ -39,8 +39,8 @@ void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
 
 void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s) const {
   // The faceted answer's normal and derivative are the interpolated field's at the flat foot.
-  const BlendedQuadricField::Value f = field_.evaluate(x, surface_.triangles[s.location.face],
-                                                       s.outward_normal, s.normal_derivative_per_m);
+  const BlendedQuadricField::Value f =
+      field_.evaluate(x, s.outward_normal, s.normal_derivative_per_m);
   const double u =
       (f.weight_sum - faceted_below_weight) / (smooth_above_weight - faceted_below_weight);
   if (u <= 0.0) return;

@@ -80,6 +80,12 @@ class RigidBody {
   // Where a SurfaceLocation found by query() is now: after the body grew or morphed it is the
   // same point of the body's surface, carried with it.
   virtual Vec3 surface_point_m(const SurfaceLocation& location) const = 0;
+  // surface_point_m(location) for a point whose query keeps `near` (friction's anchor of a
+  // garment vertex): the same point, found faster by a body that searches the kept faces.
+  virtual Vec3 surface_point_near_m(const SurfaceLocation& location, const NearFaces* near) const {
+    (void)near;
+    return surface_point_m(location);
+  }
 };
 
 }  // namespace tightfit
