@@ -207,6 +207,9 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     double energy_0_J = std::numeric_limits<double>::quiet_NaN();
     bool energy_0_read = false;
     double defect_0_N = 0.0;
+    // The potential at x where it only takes the steps ||R|| refuses, read when first needed.
+    double energy_x_J = std::numeric_limits<double>::quiet_NaN();
+    bool energy_x_read = false;
     // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
     // or indefinite tangent, along which Newton's step may be huge or useless. When the line
     // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
@@ -289,14 +292,19 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         defect_0_N = defect_ ? defect_(x) : 0.0;
         if (norm_0 > kDefectRatio * defect_0_N) energy_0_J = energy_(x);
       }
-      const double slope_J = std::isfinite(energy_0_J) ? -owned_dot(system, increment)
-                                                       : std::numeric_limits<double>::quiet_NaN();
+      // Elsewhere (the later rounds, a stalled potential, a mesh body near the solution) ||R||
+      // decides, and the potential only takes a step ||R|| refused.
+      const bool strict = std::isfinite(energy_0_J);
+      const bool lenient =
+          !strict && parameters_.line_search && parameters_.potential_globalization && energy_;
+      const double slope_J = strict || lenient ? -owned_dot(system, increment)
+                                               : std::numeric_limits<double>::quiet_NaN();
       // The potential's round-off: a sum of many terms of one sign, each exact to a few ulps.
       const double noise_J = kPotentialRoundOff * std::abs(energy_0_J);
       // A step uphill in the potential (the tangent indefinite along it: a tube turning round a
       // body that is not quite of revolution) leads to a saddle; no halving makes it descend, so
       // the tangent's shift grows at once (docs/backends.md, "Newton's line search").
-      const bool uphill = std::isfinite(energy_0_J) && slope_J > noise_J;
+      const bool uphill = strict && slope_J > noise_J;
       if (uphill) {
         trial = x;
         step_taken = 0.0;
@@ -316,12 +324,16 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         assemble(trial, tangent_current);
         const double norm = system.rhs.l2_norm();
         const bool residual_decreases = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
-        if (std::isfinite(energy_0_J) && std::isfinite(norm)) {
+        if (strict && std::isfinite(norm)) {
           const double energy_J = energy_(trial);
           accepted = (slope_J < 0.0 && energy_J <= energy_0_J + 1e-4 * s * slope_J) ||
                      (residual_decreases && energy_J <= energy_0_J + noise_J);
         } else {
           accepted = residual_decreases;
+          if (!accepted && lenient && slope_J < 0.0 && std::isfinite(norm)) {
+            if (!energy_x_read) energy_x_J = energy_(x), energy_x_read = true;
+            accepted = energy_(trial) <= energy_x_J + 1e-4 * s * slope_J;
+          }
         }
         if (accepted || halving >= parameters_.max_line_search_halvings) break;
         s *= 0.5;
@@ -337,7 +349,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         // nearly of revolution) far past where its linearisation holds, and taking such slivers
         // stalled the stocking for hundreds of iterations; the next step is shifted tenfold
         // more. A step taken nearly whole relaxes the shift tenfold.
-        if (potential_judges && step_taken < kCutForShift * full_step)
+        if (strict && step_taken < kCutForShift * full_step)
           shift_N_per_m_ = grown_shift_N_per_m();
         else
           shift_N_per_m_ =
