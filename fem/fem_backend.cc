@@ -4,6 +4,7 @@
 // post-processing (fem_state.h) behind the light fem_backend.h.
 #include "fem/fem_backend.h"
 
+#include "contact/nodal_contact.h"
 #include "core/tension_scale.h"
 #include "fem/contact_rounds.h"
 #include "fem/fem_constraints.h"
@@ -147,9 +148,11 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
                        step.gravity_on, system_);
   };
-  newton_.set_energy([this, &step](const DofVector& x) {
-    return assembly_.energy_J(x, contact_.nodes(), step.gravity_on);
-  });
+  newton_.set_energy(
+      [this, &step](const DofVector& x) {
+        return assembly_.energy_J(x, contact_.nodes(), step.gravity_on);
+      },
+      [this](const DofVector& x) { return assembly_.potential_defect_N(x, contact_.nodes()); });
   contact_.solve(step, newton_, assemble, system_, x_, log, report);
   newton_.set_energy({});
   report.residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
@@ -222,6 +225,32 @@ void FemBackend::linearise(const std::vector<Vec3>& node_positions_m, Eigen::Vec
                            Eigen::MatrixXd& tangent_N_per_m) const {
   impl_->assembly_.linearise(node_positions_m, impl_->contact_.nodes(), residual_N,
                              tangent_N_per_m);
+}
+
+namespace {
+
+// The DoF vector of every node at its position (serial: every copy of a seam node alike).
+DofVector dofs_at_nodes(const PatternMesh& pattern, const std::vector<Vec3>& node_positions_m) {
+  if (static_cast<int>(node_positions_m.size()) != pattern.n_nodes() ||
+      pattern.n_owned_nodes() != pattern.n_nodes())
+    throw std::invalid_argument(
+        "fem backend: the potential for tests needs one position per node, on one MPI rank");
+  DofVector x = pattern.dof_vector();
+  for (int node = 0; node < pattern.n_nodes(); ++node)
+    pattern.set_node_position(x, node, node_positions_m[node]);
+  return x;
+}
+
+}  // namespace
+
+double FemBackend::energy_J(const std::vector<Vec3>& node_positions_m, bool gravity_on) const {
+  return impl_->assembly_.energy_J(dofs_at_nodes(impl_->pattern_, node_positions_m),
+                                   impl_->contact_.nodes(), gravity_on);
+}
+
+double FemBackend::potential_defect_N(const std::vector<Vec3>& node_positions_m) const {
+  return impl_->assembly_.potential_defect_N(dofs_at_nodes(impl_->pattern_, node_positions_m),
+                                             impl_->contact_.nodes());
 }
 
 std::vector<Vec3> FemBackend::node_positions(const std::vector<Vec3>& vertex_positions_m) const {

@@ -66,6 +66,11 @@ class FemBackend final : public Backend {
   // a seam node takes its node's position.
   void linearise(const std::vector<Vec3>& node_positions_m, Eigen::VectorXd& residual_N,
                  Eigen::MatrixXd& tangent_N_per_m) const;
+  // For tests, serial only, at `node_positions_m` (as for linearise) with the current contact
+  // multipliers: the potential whose gradient is R for frictionless contact (J), and how far R
+  // is from that gradient (N) (fem/membrane_assembly.h).
+  double energy_J(const std::vector<Vec3>& node_positions_m, bool gravity_on) const;
+  double potential_defect_N(const std::vector<Vec3>& node_positions_m) const;
   // The nodes' positions for the welded vertices at `vertex_positions_m`: those, then (degree
   // 2) each edge's midpoint on its chord.
   std::vector<Vec3> node_positions(const std::vector<Vec3>& vertex_positions_m) const;

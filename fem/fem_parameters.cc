@@ -111,10 +111,12 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Globalization", d.potential_globalization ? "potential" : "residual",
                     Selection("potential|residual"),
                     "How a Newton step is made safe (docs/backends.md, \"Newton's line search\"). "
-                    "potential: the line search also accepts a step that lowers the potential "
-                    "(the membrane's energy, the contact penalty's potential, less the weight's "
-                    "work) where the residual norm does not decrease, and a step the line search "
-                    "cut is followed by one solve on the contact set it predicts; residual: the "
+                    "potential: in the first Newton solve of a load step the line search judges "
+                    "steps by the potential (the membrane's energy, the contact penalty's "
+                    "potential, less the weight's work) while the residual is well above the "
+                    "potential's defect on a mesh body, a step uphill in it or cut below an "
+                    "eighth grows the tangent's shift, and a step the line search cut is "
+                    "followed by one solve on the contact set it predicts; residual: the "
                     "residual norm alone decides, with no prediction after a cut step.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");

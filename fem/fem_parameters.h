@@ -62,9 +62,9 @@ struct FemParameters {
   StopRule stop{0.0, StopNorm::largest, 1e-9};
   int max_newton_iterations = 40;
   bool line_search = true;
-  // Globalization = potential: the line search also accepts a step that lowers the potential
-  // and a cut step is followed by a contact-set prediction (docs/backends.md, "Newton's line
-  // search"); false (residual): the residual's norm alone decides.
+  // Globalization = potential: the potential judges the first Newton solve of a load step, and a
+  // cut step is followed by a contact-set prediction (docs/backends.md, "Newton's line search");
+  // false (residual): the residual's norm alone decides.
   bool potential_globalization = true;
   int max_line_search_halvings = 10;
   // Newton steps re-solved with the contact set the step predicts, at most this many times per

@@ -154,6 +154,21 @@ double MembraneAssembly::energy_J(const DofVector& x, const ContactNodes& contac
   return dealii::Utilities::MPI::sum(energy, comm_);
 }
 
+double MembraneAssembly::potential_defect_N(const DofVector& x, const ContactNodes& contact) const {
+  double sum_squared = 0.0;
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const int node = pattern_.owned_nodes[k];
+    const SurfacePoint s = contact.query(*problem_.body, k, pattern_.node_position(x, node));
+    const double lambda = contact_multiplier_N(contact.multiplier_N[k], contact.penalty_N_per_m[k],
+                                               s.signed_distance_m);
+    if (lambda <= 0.0) continue;
+    Vec3 defect = lambda * (s.outward_normal - s.gap_gradient);
+    pattern_.node_constrained.remove_constrained(node, defect);
+    sum_squared += defect.squaredNorm();
+  }
+  return std::sqrt(dealii::Utilities::MPI::sum(sum_squared, comm_));
+}
+
 std::vector<Vec3> MembraneAssembly::internal_force_N(const DofVector& x) const {
   // The energy gradient on this rank's DoFs and ghosts, each cell's on the rank that owns it.
   DofVector gradient_dofs = pattern_.dof_vector();

@@ -32,6 +32,11 @@ class MembraneAssembly {
   // gravity_on, minus the weight's work. NaN when friction is on or a contact set is predicted:
   // then R is no potential's gradient.
   double energy_J(const DofVector& x, const ContactNodes& contact, bool gravity_on) const;
+  // How far R(x) is from energy_J's gradient, N: the contact force takes the body's normal n
+  // where the potential's gradient takes the signed distance's, dg/dx, and on a mesh body the
+  // two differ (contact/rigid_body.h). The 2-norm over every rank of lambda (n - dg/dx) at the
+  // nodes in contact, held directions removed (zero on the analytic bodies).
+  double potential_defect_N(const DofVector& x, const ContactNodes& contact) const;
 
   // The garment's weight as consistent nodal loads, per node, N:
   //   f_k = g int N_k rho_A dA_rest,

@@ -164,6 +164,13 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
   const double mean_edge_m = pattern_.mean_edge_m;
   std::vector<double>& history_N = log.residual_N;
   assemble(x, true);
+  int slow_iterations = 0;
+  // The potential judges the first solve of a load step, where the garment travels onto the
+  // body; the later rounds start next to the solution, where on a mesh body its minimum is not
+  // R = 0 (see kDefectRatio).
+  bool potential_judges =
+      parameters_.line_search && parameters_.potential_globalization && energy_ && first_solve_;
+  first_solve_ = false;
   for (int iteration = 0;; ++iteration) {
     const double residual_N = scaled_residual_N(system);
     history_N.push_back(residual_N);
@@ -185,15 +192,24 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     krylov_tolerance_ = ratio < 0.5
                             ? std::clamp(0.9 * ratio * ratio, parameters_.linear_tolerance, 1e-2)
                             : parameters_.linear_tolerance;
+    // The potential's stall: kStalledIterations in a row that lowered the residual by less than
+    // a tenth hand the rest of this solve to ||R|| alone (its minimum on a mesh body is not
+    // R = 0, see kDefectRatio, and its steps may keep shrinking there).
+    slow_iterations = iteration > 0 && ratio > 0.9 ? slow_iterations + 1 : 0;
+    if (slow_iterations >= kStalledIterations) potential_judges = false;
     if (iteration >= parameters_.max_newton_iterations)
       fail(StopReason::iteration_limit, step,
            "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
            residual_N, failure_details(system, x, log));
     const double norm_0 = system.rhs.l2_norm();
-    // The potential at x, evaluated when a trial point first needs it (most steps pass the
-    // residual's test and never do).
+    // The potential at x and its defect, read once per iteration while the potential judges
+    // (see the line search below).
     double energy_0_J = std::numeric_limits<double>::quiet_NaN();
     bool energy_0_read = false;
+    double defect_0_N = 0.0;
+    // The potential at x where it only takes the steps ||R|| refuses, read when first needed.
+    double energy_x_J = std::numeric_limits<double>::quiet_NaN();
+    bool energy_x_read = false;
     // A zero-stress or compressed membrane (a tube that just touches the body) has a singular
     // or indefinite tangent, along which Newton's step may be huge or useless. When the line
     // search fails, the tangent is shifted by mu I (Levenberg-Marquardt), mu growing tenfold
@@ -255,8 +271,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         // line search.
         if (escalations >= 8) throw;
         linear_solver_->reset();  // a failed factorization is not reused
-        shift_N_per_m_ =
-            shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_;
+        shift_N_per_m_ = grown_shift_N_per_m();
         ++log.n_shifted_solves;
         ++escalations;
         continue;
@@ -269,27 +284,56 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       accepted = !parameters_.line_search;
       // The potential's slope along the increment, dPi/ds = R . increment = -rhs . increment
       // (rhs is zero on constrained rows), read before the trial assemblies overwrite rhs.
-      const double slope_J =
-          parameters_.line_search && parameters_.potential_globalization && energy_
-              ? -owned_dot(system, increment)
-              : std::numeric_limits<double>::quiet_NaN();
-      for (int halving = 0; parameters_.line_search; ++halving) {
+      // The potential judges only where R is its gradient to within a tenth (kDefectRatio):
+      // closer to the solution on a mesh body, where the contact force's normal is not the
+      // distance's gradient, its minimum is not R = 0 and ||R|| alone decides.
+      if (potential_judges && !energy_0_read) {
+        energy_0_read = true;
+        defect_0_N = defect_ ? defect_(x) : 0.0;
+        if (norm_0 > kDefectRatio * defect_0_N) energy_0_J = energy_(x);
+      }
+      // Elsewhere (the later rounds, a stalled potential, a mesh body near the solution) ||R||
+      // decides, and the potential only takes a step ||R|| refused.
+      const bool strict = std::isfinite(energy_0_J);
+      const bool lenient =
+          !strict && parameters_.line_search && parameters_.potential_globalization && energy_;
+      const double slope_J = strict || lenient ? -owned_dot(system, increment)
+                                               : std::numeric_limits<double>::quiet_NaN();
+      // The potential's round-off: a sum of many terms of one sign, each exact to a few ulps.
+      const double noise_J = kPotentialRoundOff * std::abs(energy_0_J);
+      // A step uphill in the potential (the tangent indefinite along it: a tube turning round a
+      // body that is not quite of revolution) leads to a saddle; no halving makes it descend, so
+      // the tangent's shift grows at once (docs/backends.md, "Newton's line search").
+      const bool uphill = strict && slope_J > noise_J;
+      if (uphill) {
+        trial = x;
+        step_taken = 0.0;
+        tangent_current = false;
+      }
+      for (int halving = 0; parameters_.line_search && !uphill; ++halving) {
         trial = x;
         trial.add(s, increment);
         // Armijo's sufficient decrease (1e-4 s) of the potential Pi along a descent direction,
-        // or of ||R||_2 (docs/backends.md, "Newton's line search"). Pi alone admits the steps
-        // that cross a valley of ||R|| (a slack tube settling, a tube on an elliptic section:
-        // ||R|| alone stalled there); ||R|| alone decides where Pi has none (friction, a
-        // predicted contact set) and near the solution, where Pi's decrease falls below its
-        // round-off.
+        // or of ||R||_2 where Pi does not rise beyond its round-off (docs/backends.md, "Newton's
+        // line search"). Pi admits the steps that cross a valley of ||R|| (a slack tube
+        // settling, a tube on an elliptic section: ||R|| alone stalled there), and refuses those
+        // that lower ||R|| while climbing Pi towards a saddle (the stocking's tube turning round
+        // the leg). ||R|| alone decides where Pi has none (friction) and near the solution,
+        // where Pi's change falls below its round-off.
         tangent_current = halving == 0;
         assemble(trial, tangent_current);
         const double norm = system.rhs.l2_norm();
         const bool residual_decreases = std::isfinite(norm) && norm <= (1.0 - 1e-4 * s) * norm_0;
-        accepted = residual_decreases;
-        if (!accepted && slope_J < 0.0 && std::isfinite(norm)) {
-          if (!energy_0_read) energy_0_J = energy_(x), energy_0_read = true;
-          accepted = energy_(trial) <= energy_0_J + 1e-4 * s * slope_J;
+        if (strict && std::isfinite(norm)) {
+          const double energy_J = energy_(trial);
+          accepted = (slope_J < 0.0 && energy_J <= energy_0_J + 1e-4 * s * slope_J) ||
+                     (residual_decreases && energy_J <= energy_0_J + noise_J);
+        } else {
+          accepted = residual_decreases;
+          if (!accepted && lenient && slope_J < 0.0 && std::isfinite(norm)) {
+            if (!energy_x_read) energy_x_J = energy_(x), energy_x_read = true;
+            accepted = energy_(trial) <= energy_x_J + 1e-4 * s * slope_J;
+          }
         }
         if (accepted || halving >= parameters_.max_line_search_halvings) break;
         s *= 0.5;
@@ -300,8 +344,16 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         tangent_current = false;
       }
       if (accepted) {
-        shift_N_per_m_ =
-            shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m_ ? 0.1 * shift_N_per_m_ : 0;
+        // Levenberg-Marquardt's trust: a step the line search had to cut below an eighth
+        // (kCutForShift) followed a soft mode of the tangent (a tube turning round a limb that is
+        // nearly of revolution) far past where its linearisation holds, and taking such slivers
+        // stalled the stocking for hundreds of iterations; the next step is shifted tenfold
+        // more. A step taken nearly whole relaxes the shift tenfold.
+        if (strict && step_taken < kCutForShift * full_step)
+          shift_N_per_m_ = grown_shift_N_per_m();
+        else
+          shift_N_per_m_ =
+              shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m_ ? 0.1 * shift_N_per_m_ : 0;
         break;
       }
       // A step on the predicted set that did not descend: solved again on the set at x, with
@@ -312,8 +364,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         continue;
       }
       if (escalations >= 8) break;
-      shift_N_per_m_ =
-          shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_;
+      shift_N_per_m_ = grown_shift_N_per_m();
       ++log.n_shifted_solves;
       ++escalations;
     }

@@ -11,6 +11,7 @@
 #include "fem/pattern_mesh.h"
 #include "fem/petsc_linear_solver.h"
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <string>
@@ -62,6 +63,7 @@ class NewtonSolver {
   void start_step() {
     shift_N_per_m_ = 0.0;
     step_cut_ = false;
+    first_solve_ = true;
   }
   // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
   void pattern_changed() { linear_solver_->reset(); }
@@ -72,7 +74,12 @@ class NewtonSolver {
   }
 
   // The line search's first merit (see solve()); without it, ||R||_2 alone.
-  void set_energy(Energy energy) { energy_ = std::move(energy); }
+  // With `defect`, how far R is from the potential's gradient (MembraneAssembly::
+  // potential_defect_N), N: the potential judges steps only where R is well above it.
+  void set_energy(Energy energy, Energy defect = {}) {
+    energy_ = std::move(energy);
+    defect_ = std::move(defect);
+  }
 
   // Iterates from x until max |R| <= tolerance_N(); returns the iterations taken. Throws
   // SolverError (throw_step_failure) on a non-finite residual or too many iterations.
@@ -107,6 +114,7 @@ class NewtonSolver {
   std::unique_ptr<PetscLinearSolver> linear_solver_;
   ContactSetPredictor predictor_;
   Energy energy_;
+  Energy defect_;
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
@@ -116,9 +124,28 @@ class NewtonSolver {
   // Whether the line search cut the last iteration's step (its next step is then solved on the
   // contact set it predicts, see solve()).
   bool step_cut_ = false;
+  // No solve() yet since start_step().
+  bool first_solve_ = true;
   // Prediction rounds of a step after a cut one: 1 took the tubes on mesh bodies through in
   // 11 to 23 iterations where the contact set at x took them nowhere (docs/performance.md).
   static constexpr int kPredictionRoundsAfterCut = 1;
+  // The potential's relative round-off, over its sum of cells and nodes (see solve()).
+  static constexpr double kPotentialRoundOff = 1e-12;
+  // ||R||_2 over the potential's defect (see solve()) above which the potential judges steps.
+  static constexpr double kDefectRatio = 10.0;
+  // Iterations in a row that lower the residual by less than a tenth before the potential stops
+  // judging for the rest of a solve (see solve()).
+  static constexpr int kStalledIterations = 5;
+  // A step cut below this fraction of Newton's grows the next step's shift (see solve()).
+  static constexpr double kCutForShift = 1.0 / 8.0;
+  // The largest shift, over the stiffness scale: beyond it the step is a steepest descent
+  // already, too short to matter.
+  static constexpr double kLargestShift = 1e6;
+  // The shift grown tenfold, from 1e-2 of the stiffness scale, capped by kLargestShift.
+  double grown_shift_N_per_m() const {
+    return std::min(shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_,
+                    kLargestShift * stiffness_scale_N_per_m_);
+  }
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;
 };
