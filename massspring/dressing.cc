@@ -159,6 +159,15 @@ DressingResult dress(const Problem& problem, const Garment& garment,
   }
 
   result.closed_below_m = settings.closed_fraction * open.mean_edge_m();
+  // A zero-rest-length spring as stiff as the seam's closing needs pulls a seam vertex a far
+  // gap away (tenths of a metre round a body) hundreds of times harder than its panel's
+  // membrane holds it: the vertex leaves its panel and swings past its partner. Beyond the
+  // closing gap the pull stays at the closing gap's (docs/cookbook-jumpsuit.md).
+  if (settings.limit_seam_pull)
+    open.set_seam_pull_limit(open.full_seam_stiffness_N_per_m() * result.closed_below_m,
+                             settings.sewn_stiffness_factor);
+  if (settings.stiffness_over_mass_ratio > 0)
+    open.limit_stiffness_over_mass(settings.stiffness_over_mass_ratio);
   const double runaway_m = 10.0 * open.size_m();
   const double damping = open.damping_per_s();
   double dt = 0.0;
@@ -178,9 +187,16 @@ DressingResult dress(const Problem& problem, const Garment& garment,
 
   // How far the body's surface can move as its scale changes by ds: ds times its reach.
   const double reach_m = body.reach_m();
+  // The body grows a step on each frame that starts with every seam narrower than the growth
+  // gap (when that is set), so that a seam still open far is not trapped under a body part
+  // growing over it (a trouser leg's inseam between the thighs).
+  const double growth_gap_m = settings.growth_gap_fraction * open.mean_edge_m();
+  int growth_steps = 0;
+  result.largest_seam_gap_m = open.largest_seam_gap_m();
   for (;;) {
+    if (growth_gap_m <= 0.0 || result.largest_seam_gap_m < growth_gap_m) ++growth_steps;
     const double scale = settings.start_scale +
-                         (1.0 - settings.start_scale) * ramp(result.frames, settings.growth_frames);
+                         (1.0 - settings.start_scale) * ramp(growth_steps, settings.growth_frames);
     const double scale_before = body.scale();
     body.set_scale(scale);
     open.body_moved(std::abs(body.scale() - scale_before) * reach_m * 1.01);
@@ -193,6 +209,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     open.rk4_frame(dt, quasi_static ? 0.0 : damping, false);
     ++result.frames;
     result.largest_seam_gap_m = open.largest_seam_gap_m();
+    if (settings.limit_seam_pull) open.sew_closed_seams(result.closed_below_m);
     if (settings.progress && result.frames % settings.progress_frames == 0)
       *settings.progress
           << "  dressing: frame " << result.frames << ", body scale " << body.scale()
@@ -203,7 +220,8 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     if (!std::isfinite(result.largest_seam_gap_m))
       throw fail(StopReason::not_finite,
                  "diverged (non-finite position; try a smaller Mass spring/Time step)");
-    const bool whole = result.frames >= std::max(settings.growth_frames, settings.seam_ramp_frames);
+    const bool whole =
+        growth_steps >= settings.growth_frames && result.frames >= settings.seam_ramp_frames;
     if (whole && result.largest_seam_gap_m < result.closed_below_m) break;
     if (result.frames >= settings.maximum_frames)
       throw fail(

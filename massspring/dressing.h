@@ -51,6 +51,9 @@ struct DressingSettings {
   bool skeleton_shortens_torso = false;  // SkeletonShrink::set_torso_shortening
   double start_scale = 0.7;              // the body's scale at the first frame (0, 1]
   int growth_frames = 2000;              // frames over which the scale rises linearly to 1
+  // The body grows only on frames when every seam pair is closer than this fraction of the mean
+  // rest edge (the growth waits for the seams); 0: it grows on every frame.
+  double growth_gap_fraction = 1.0;
   int seam_ramp_frames = 500;  // frames over which the seam stiffness rises linearly to full
   // The seams are closed when every seam vertex pair is closer than this fraction of the mean
   // rest edge length (welding then moves no vertex by more than half of that).
@@ -59,6 +62,20 @@ struct DressingSettings {
   // (the penalty's own depth, p / k) is put back on the surface; a deeper one has passed
   // through the body and the dressing fails.
   double inside_fraction = 0.25;
+  // The dressing's motion need not be true in time, only end where the forces balance: the
+  // particles stiffer for their mass than this many times the median one are made heavier
+  // (OpenSeamGarment::limit_stiffness_over_mass), so that the time step follows the typical
+  // particle and the garment can move as far as the body's growth asks within the frames.
+  // 0: true masses.
+  double stiffness_over_mass_ratio = 4.0;
+  // Each seam spring pulls no harder than the full spring does at the closing gap (a constant
+  // pull beyond it), so that a seam far open draws its panel along instead of tearing its
+  // vertices out of it. false: linear springs at any gap.
+  bool limit_seam_pull = true;
+  // With the limit, a pair drawn shut is sewn: its spring linear and this many times stiffer, so
+  // that the tension of a tight garment holds it closer (its gap T h / k). The particles it
+  // makes stiffer are made heavier by the mass scaling above, not the time step shorter.
+  double sewn_stiffness_factor = 2.0;
   int maximum_frames = 40000;
   // Time step, damping, quasi-static frames, bending and the seam springs' stiffness factor.
   MassSpringParameters mass_spring;

@@ -56,7 +56,34 @@ void OpenSeamGarment::body_moved(double bound_m) {
 }
 
 void OpenSeamGarment::set_seam_fraction(double fraction) {
+  std::vector<char> sewn = seams_.sewn();
   seams_ = SeamSprings(panels_.seam_pairs, fraction * full_seam_stiffness_N_per_m_);
+  seams_.set_pull_limit(seam_pull_limit_N_);
+  seams_.set_sewn_stiffness_factor(sewn_factor_);
+  seams_.set_sewn(std::move(sewn));
+}
+
+void OpenSeamGarment::set_seam_pull_limit(double pull_limit_N, double sewn_factor) {
+  seam_pull_limit_N_ = pull_limit_N;
+  sewn_factor_ = sewn_factor;
+  seams_.set_pull_limit(pull_limit_N);
+  seams_.set_sewn_stiffness_factor(sewn_factor);
+}
+
+int OpenSeamGarment::limit_stiffness_over_mass(double ratio) {
+  const std::vector<double> stiffness = stiffness_bounds_N_per_m();
+  std::vector<double> over_mass(stiffness.size());
+  for (std::size_t i = 0; i < stiffness.size(); ++i) over_mass[i] = stiffness[i] / mass_kg_[i];
+  std::vector<double> sorted = over_mass;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double limit = ratio * sorted[sorted.size() / 2];
+  int raised = 0;
+  for (std::size_t i = 0; i < stiffness.size(); ++i)
+    if (over_mass[i] > limit) {
+      mass_kg_[i] = stiffness[i] / limit;
+      ++raised;
+    }
+  return raised;
 }
 
 void OpenSeamGarment::forces(const std::vector<Vec3>& x, bool gravity_on,
@@ -91,14 +118,20 @@ void OpenSeamGarment::rk4_frame(double dt, double c, bool gravity_on) {
 
 double OpenSeamGarment::time_step_s() const {
   if (parameters_.time_step_s > 0) return parameters_.time_step_s;
+  return stable_time_step_s(stiffness_bounds_N_per_m(), mass_kg_, parameters_.time_step_safety);
+}
+
+std::vector<double> OpenSeamGarment::stiffness_bounds_N_per_m() const {
   std::vector<double> stiffness(x_.size(), 0.0);
   elements_.add_stiffness_bounds(x_, stiffness);
   hinges_.add_stiffness_bounds(x_, stiffness);
   // The full seam stiffness, whatever the ramp: the step stays stable as the ramp rises.
-  SeamSprings(panels_.seam_pairs, full_seam_stiffness_N_per_m_).add_stiffness_bounds(stiffness);
+  SeamSprings full(panels_.seam_pairs, full_seam_stiffness_N_per_m_);
+  full.set_sewn_stiffness_factor(sewn_factor_);
+  full.add_stiffness_bounds(stiffness);
   for (std::size_t i = 0; i < x_.size(); ++i)
     stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
-  return stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety);
+  return stiffness;
 }
 
 double OpenSeamGarment::damping_per_s() const {

@@ -16,6 +16,7 @@
 #include "massspring/triangle_elements.h"
 #include "massspring/unwelded_panels.h"
 
+#include <limits>
 #include <vector>
 
 namespace tightfit {
@@ -38,6 +39,21 @@ class OpenSeamGarment {
   void set_clearance_factor(double factor) { clearance_factor_ = factor; }
   // Scales every seam spring's stiffness: `fraction` of the full one (a ramp), dimensionless.
   void set_seam_fraction(double fraction);
+  // No seam spring not yet sewn pulls harder than this, N (SeamSprings::set_pull_limit;
+  // infinite: linear); a sewn one is `sewn_factor` times stiffer than the others.
+  void set_seam_pull_limit(double pull_limit_N, double sewn_factor = 1.0);
+  // Every seam pair closer than `closed_m` now is sewn for good (SeamSprings::sew_closed_pairs):
+  // its spring no longer limited. Returns how many pairs are sewn.
+  int sew_closed_seams(double closed_m) { return seams_.sew_closed_pairs(x_, closed_m); }
+  // The full seam springs' stiffness, N/m.
+  double full_seam_stiffness_N_per_m() const { return full_seam_stiffness_N_per_m_; }
+  // Mass scaling for a motion that need not be true in time (the dressing): a particle whose
+  // stiffness bound over mass exceeds `ratio` times the median particle's at the current
+  // positions gets the mass that brings it to that bound, so that the few stiffest, lightest
+  // particles (the small triangles at short seam edges) do not set the whole garment's time
+  // step. Returns how many particles were made heavier. The equilibrium is unchanged (the
+  // masses enter only the motion).
+  int limit_stiffness_over_mass(double ratio);
 
   // Membrane + bending + seam + contact (+ gravity) force at `x` into `force`, held components
   // removed, N.
@@ -47,6 +63,8 @@ class OpenSeamGarment {
   // The stable RK4 time step at the current positions with the full seam stiffness (Mass
   // spring/Time step if given), s.
   double time_step_s() const;
+  // Each particle's stiffness bound at the current positions (Gershgorin row sums), N/m.
+  std::vector<double> stiffness_bounds_N_per_m() const;
   // Mass spring/Damping, or the critical damping of the garment's slowest membrane wave, 1/s.
   double damping_per_s() const;
   double largest_seam_gap_m() const { return seams_.largest_gap_m(x_); }
@@ -69,6 +87,8 @@ class OpenSeamGarment {
   TriangleElements elements_;
   BendingHinges hinges_;
   double full_seam_stiffness_N_per_m_ = 0.0;
+  double seam_pull_limit_N_ = std::numeric_limits<double>::infinity();
+  double sewn_factor_ = 1.0;
   SeamSprings seams_;
   std::vector<double> mass_kg_;
   std::vector<double> rest_vertex_area_m2_;

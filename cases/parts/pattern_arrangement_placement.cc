@@ -80,9 +80,11 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
                      "The torso also shrinks along its axis about its middle, the limbs moving "
                      "with their roots, so that the shoulders start lower than the shoulder "
                      "seams; false: each part shrinks across its own axis only.");
-    prm.declare_double("Damping", 0, 0, ParameterTree::unbounded,
-                       "Mass-proportional damping while the seams close (1/s); 0: the "
-                       "automatic one, critical for the garment's slowest membrane wave.");
+    prm.declare_double("Damping", 2000, 0, ParameterTree::unbounded,
+                       "Mass-proportional damping while the seams close (1/s): the panels, "
+                       "drawn from tenths of a metre apart, move without overshooting their "
+                       "partners (docs/cookbook-jumpsuit.md); 0: the automatic one, critical "
+                       "for the garment's slowest membrane wave.");
     declare_dressing_frames(prm);
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
