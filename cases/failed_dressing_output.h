@@ -1,5 +1,5 @@
 // Where a failed dressing leaves the state it stopped in: two VTU files in the run's output
-// directory, for ParaView (docs/arrangement.md "What holds the jumpsuit's seams").
+// directory, for ParaView (docs/arrangement.md "The jumpsuit and a failed dressing").
 #pragma once
 
 #include "cases/case_parameters.h"
