@@ -19,6 +19,13 @@
 
 namespace tightfit {
 
+void draw_seams_from_afar(DressingSettings& settings) {
+  settings.stiffness_over_mass_ratio = 4.0;
+  settings.limit_seam_pull = true;
+  settings.sewn_stiffness_factor = 2.0;
+  settings.growth_gap_fraction = 1.0;
+}
+
 namespace {
 
 // The panel an unwelded vertex belongs to, and its index in that panel.
@@ -187,14 +194,13 @@ DressingResult dress(const Problem& problem, const Garment& garment,
 
   // How far the body's surface can move as its scale changes by ds: ds times its reach.
   const double reach_m = body.reach_m();
-  // The body grows a step on each frame that starts with every seam narrower than the growth
-  // gap (when that is set), so that a seam still open far is not trapped under a body part
+  // The body grows a step after each frame that ends with every seam narrower than the growth
+  // gap (when that is set; else after every frame), so that a seam still open far is not trapped under a body part
   // growing over it (a trouser leg's inseam between the thighs).
   const double growth_gap_m = settings.growth_gap_fraction * open.mean_edge_m();
   int growth_steps = 0;
   result.largest_seam_gap_m = open.largest_seam_gap_m();
   for (;;) {
-    if (growth_gap_m <= 0.0 || result.largest_seam_gap_m < growth_gap_m) ++growth_steps;
     const double scale = settings.start_scale +
                          (1.0 - settings.start_scale) * ramp(growth_steps, settings.growth_frames);
     const double scale_before = body.scale();
@@ -209,6 +215,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     open.rk4_frame(dt, quasi_static ? 0.0 : damping, false);
     ++result.frames;
     result.largest_seam_gap_m = open.largest_seam_gap_m();
+    if (growth_gap_m <= 0.0 || result.largest_seam_gap_m < growth_gap_m) ++growth_steps;
     if (settings.limit_seam_pull) open.sew_closed_seams(result.closed_below_m);
     if (settings.progress && result.frames % settings.progress_frames == 0)
       *settings.progress

@@ -53,7 +53,7 @@ struct DressingSettings {
   int growth_frames = 2000;              // frames over which the scale rises linearly to 1
   // The body grows only on frames when every seam pair is closer than this fraction of the mean
   // rest edge (the growth waits for the seams); 0: it grows on every frame.
-  double growth_gap_fraction = 1.0;
+  double growth_gap_fraction = 0.0;
   int seam_ramp_frames = 500;  // frames over which the seam stiffness rises linearly to full
   // The seams are closed when every seam vertex pair is closer than this fraction of the mean
   // rest edge length (welding then moves no vertex by more than half of that).
@@ -67,15 +67,15 @@ struct DressingSettings {
   // (OpenSeamGarment::limit_stiffness_over_mass), so that the time step follows the typical
   // particle and the garment can move as far as the body's growth asks within the frames.
   // 0: true masses.
-  double stiffness_over_mass_ratio = 4.0;
+  double stiffness_over_mass_ratio = 0.0;
   // Each seam spring pulls no harder than the full spring does at the closing gap (a constant
   // pull beyond it), so that a seam far open draws its panel along instead of tearing its
   // vertices out of it. false: linear springs at any gap.
-  bool limit_seam_pull = true;
+  bool limit_seam_pull = false;
   // With the limit, a pair drawn shut is sewn: its spring linear and this many times stiffer, so
   // that the tension of a tight garment holds it closer (its gap T h / k). The particles it
   // makes stiffer are made heavier by the mass scaling above, not the time step shorter.
-  double sewn_stiffness_factor = 2.0;
+  double sewn_stiffness_factor = 1.0;
   int maximum_frames = 40000;
   // Time step, damping, quasi-static frames, bending and the seam springs' stiffness factor.
   MassSpringParameters mass_spring;
@@ -86,6 +86,13 @@ struct DressingSettings {
   // text it returns (say, where it wrote that state) is added to the error's message.
   std::function<std::string(const DressingSnapshot&)> on_failure;
 };
+
+// Seams that start far apart (the panels where a pattern file arranges them, decimetres from
+// their partners; docs/cookbook-jumpsuit.md): heavier stiff particles (ratio 4), a limited seam
+// pull, pairs sewn once drawn shut (twice as stiff), and a body that grows only while every seam
+// is within a mean edge. The placements whose panels start wrapped close round the body keep
+// the plain springs (the defaults above).
+void draw_seams_from_afar(DressingSettings& settings);
 
 struct DressingResult {
   std::vector<Vec3> welded_positions_m;

@@ -103,6 +103,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     const double arm_raise_rad = prm.get_double("Arm raise") * M_PI / 180.0;
     const bool shorten_torso = prm.get_bool("Shorten torso");
     DressingSettings settings;
+    draw_seams_from_afar(settings);
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
     settings.mass_spring.damping_per_s = prm.get_double("Damping");

@@ -233,6 +233,7 @@ void dress_tubes_round_limbs(double offset_m, double max_edge_stretch) {
   const std::vector<Vec3> start =
       arranged_positions(garment, mesh, unfitted_arrangement(Mat3::Identity()));
   DressingSettings settings;
+  draw_seams_from_afar(settings);  // as Placement/Kind = pattern arrangement dresses
   settings.skeleton = skeleton_bones(measured);
   settings.start_scale = 0.6;
   settings.growth_frames = 1500;

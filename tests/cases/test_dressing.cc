@@ -186,11 +186,12 @@ TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
 
 TEST(Dressing, AFailedDressingWritesTheStateItStoppedIn) {
   // The garment too small for its body above, with files written: the error names the two VTU
-  // files and the body's scale s it stopped at (the body grows only while the seams are near
-  // closed, so s < 1 here); the body in the second is the cylinder at that scale, every point at
-  // most s alpha R0 from the axis and the farthest at it (the cylinder's own points, so to the
-  // six digits the message prints: 1e-5 relative); the panels in the first lie pressed on that
-  // cylinder, none more than 1 mm inside it (the penalty's depth p / k).
+  // files and the body's scale s it stopped at (1 once the growth frames are over; below 1
+  // where the body waits for the seams, as a pattern arrangement's does); the body in the second is
+  // the cylinder at that scale, every point at most s alpha R0 from the axis and the farthest at it
+  // (the cylinder's own points, so to the six digits the message prints: 1e-5 relative); the panels
+  // in the first lie pressed on that cylinder, none more than 1 mm inside it (the penalty's depth p
+  // / k).
   CaseParameters parameters = too_small_for_the_body();
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "tightfit_test_failed_dressing";
