@@ -195,8 +195,8 @@ DressingResult dress(const Problem& problem, const Garment& garment,
   // How far the body's surface can move as its scale changes by ds: ds times its reach.
   const double reach_m = body.reach_m();
   // The body grows a step after each frame that ends with every seam narrower than the growth
-  // gap (when that is set; else after every frame), so that a seam still open far is not trapped under a body part
-  // growing over it (a trouser leg's inseam between the thighs).
+  // gap (when that is set; else after every frame), so that a seam still open far is not trapped
+  // under a body part growing over it (a trouser leg's inseam between the thighs).
   const double growth_gap_m = settings.growth_gap_fraction * open.mean_edge_m();
   int growth_steps = 0;
   result.largest_seam_gap_m = open.largest_seam_gap_m();
