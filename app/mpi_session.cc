@@ -6,22 +6,9 @@
 
 namespace tightfit {
 
-namespace {
-
-// Run without mpirun, Open MPI starts a daemon beside the process in case it spawns others
-// (it never does): told so, a run's start-up costs about 50 ms of CPU less. Set only when the
-// user has not set it and no launcher started the process.
-int isolate_a_singleton() {
-  if (!std::getenv("OMPI_COMM_WORLD_SIZE")) setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  return 0;
-}
-
-}  // namespace
-
 struct MpiSession::State {
   // One thread per rank: the solves are small and the ranks (or other runs) use the cores.
-  State(int& argc, char**& argv) : isolated(isolate_a_singleton()), init(argc, argv, 1) {}
-  int isolated;
+  State(int& argc, char**& argv) : init(argc, argv, 1) {}
   dealii::Utilities::MPI::MPI_InitFinalize init;
 };
 
