@@ -64,7 +64,9 @@ TEST(Arrangement, PanelsStartOutsideTheShrunkTorsoWithTheirSideSeamsUnderTheArmp
       // Outside the ellipse grown by 1 cm all round: (x / (a + 0.01))^2 + (y / (b + 0.01))^2 >= 1.
       EXPECT_GE(std::pow(q.x() / (a + 0.01), 2) + std::pow(q.y() / (b + 0.01), 2), 1.0)
           << "panel " << p << " vertex " << u;
-      if (std::abs(q.x()) < 0.05) EXPECT_EQ(q.y() < 0, p == 0) << "panel " << p;
+      if (std::abs(q.x()) < 0.05) {
+        EXPECT_EQ(q.y() < 0, p == 0) << "panel " << p;
+      }
       lowest = std::min(lowest, q.z());
       highest = std::max(highest, q.z());
     }
