@@ -168,15 +168,11 @@ TEST(Dressing, AGarmentTooSmallForTheBodyFailsNamingTheSeam) {
   // seam length, twice the closing gap (0.05 of an edge): the seams cannot close.
   CaseParameters parameters = too_small_for_the_body();
   parameters.output.write_files = false;
-  double scale = 0.0;
   try {
     make_scenario(parameters);
     FAIL() << "the dressing closed a seam it cannot";
   } catch (const SolverError& e) {
     const std::string message = e.what();
-    const std::size_t at = message.find("(body scale ");
-    ASSERT_NE(at, std::string::npos) << message;
-    scale = std::stod(message.substr(at + 12));
     std::printf("%s\n", message.c_str());
     EXPECT_NE(message.find("did not close within 1500 frames"), std::string::npos) << message;
     EXPECT_NE(message.find("on seam 4 5T"), std::string::npos) << message;
