@@ -18,8 +18,12 @@ Usage:
       cases, DIR/<case name>); prints progress and a summary table.
   tightfit compare CASE.prm [--output DIR] [--set ...]
       Runs the case on both backends on the same mesh and writes compare.csv.
-  tightfit convergence CASE.prm [--levels N] [--output DIR] [--set ...]
-      Runs the case on N meshes, halving the edge length each time, on both backends.
+  tightfit convergence CASE.prm [--levels N] [--ratio R] [--regions A,B,...]
+                               [--backends massspring,fem] [--output DIR] [--set ...]
+      Runs the case on N meshes (default 3), dividing the edge lengths by R (default 2) each
+      time, on each backend (default both), and prints and writes the mean pressure's observed
+      order, Richardson estimate and GCI; for a case with named regions (Measurements/List:
+      regions) the same for each region's mean and peak pressure (default every region).
   tightfit pattern FILE [--edge-length L] [--seams "..."] [--folds "..."] [--size S]
                         [--units mm|cm|inch] [--output DIR]
       Reads a sewing pattern (.svg, .json, .dxf), prints its sizes (a graded DXF), panels,
@@ -61,6 +65,23 @@ Exit status: 0 success, 1 a solver failed (results so far are kept), 2 bad input
 
 namespace {
 
+// "a,b,c" as names; throws UsageError naming the option for an empty one.
+std::vector<std::string> name_list(const std::string& option, const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    std::string piece = text.substr(begin, comma - begin);
+    piece.erase(0, piece.find_first_not_of(' '));
+    piece.erase(piece.find_last_not_of(' ') + 1);
+    if (piece.empty())
+      throw UsageError(option + " needs names separated by commas, not '" + text + "'");
+    names.push_back(piece);
+    begin = comma + 1;
+  }
+  return names;
+}
+
 // "1,2.5,-3" as numbers; throws UsageError naming the option.
 std::vector<double> number_list(const std::string& option, const std::string& text) {
   std::vector<double> numbers;
@@ -81,7 +102,8 @@ std::vector<double> number_list(const std::string& option, const std::string& te
 // The options each command takes, for the message that refuses another.
 std::vector<std::string> options_of(const std::string& command) {
   std::vector<std::string> options{"--output", "--set"};
-  if (command == "convergence") options.push_back("--levels");
+  if (command == "convergence")
+    options.insert(options.end(), {"--levels", "--ratio", "--regions", "--backends"});
   if (command == "pattern")
     options.insert(options.end(), {"--edge-length", "--seams", "--folds", "--size", "--units"});
   if (command == "girths") options.insert(options.end(), {"--near", "--heights", "--axis"});
@@ -142,6 +164,18 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
         throw UsageError("--levels needs a whole number, not '" + text + "'");
       }
       if (cl.levels < 2 || cl.levels > 8) throw UsageError("--levels must be between 2 and 8");
+    } else if (first == "convergence" && a == "--ratio") {
+      const std::string& text = value();
+      char* end = nullptr;
+      cl.refinement_ratio = std::strtod(text.c_str(), &end);
+      // Above 4 a level would hold 16 times the vertices of the one before.
+      if (end == text.c_str() || *end != '\0' || !(cl.refinement_ratio > 1.0) ||
+          cl.refinement_ratio > 4.0)
+        throw UsageError("--ratio needs a number above 1 and at most 4, not '" + text + "'");
+    } else if (first == "convergence" && a == "--regions") {
+      cl.convergence_regions = name_list(a, value());
+    } else if (first == "convergence" && a == "--backends") {
+      cl.convergence_backends = name_list(a, value());
     } else if (first == "pattern" && a == "--edge-length") {
       const std::string& text = value();
       char* end = nullptr;

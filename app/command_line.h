@@ -9,12 +9,16 @@
 namespace tightfit {
 
 struct CommandLine {
-  std::string
-      command;  // run, compare, convergence, design, pattern, girths, print-parameters, help, version
+  std::string command;  // run, compare, convergence, design, pattern, girths, print-parameters,
+                        // help, version
   std::vector<std::string> case_files;
-  std::string output_dir;                  // empty: the case's Output/Directory
-  std::vector<std::string> overrides;      // "Path/To/Entry=value"
-  int levels = 3;                          // convergence: number of meshes
+  std::string output_dir;              // empty: the case's Output/Directory
+  std::vector<std::string> overrides;  // "Path/To/Entry=value"
+  int levels = 3;                      // convergence: number of meshes
+  // convergence: the edge lengths' ratio from one level to the next, the regions to study
+  // (empty: every region of the case) and the backends to run (empty: every backend).
+  double refinement_ratio = 2.0;
+  std::vector<std::string> convergence_regions, convergence_backends;
   std::string parameters_format = "text";  // print-parameters: text, prm or json
   // pattern: target mesh edge length (m), seams and fold edges besides the file's.
   double pattern_edge_length_m = 0.01;

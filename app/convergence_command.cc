@@ -1,23 +1,28 @@
 #include "app/convergence_command.h"
 
+#include "app/region_convergence_tables.h"
 #include "app/run_command.h"
 #include "app/summary_table.h"
 #include "cases/case_parameters.h"
 #include "cases/convergence_run.h"
 #include "cases/scenario.h"
 #include "core/backend_registry.h"
+#include "core/closest_names.h"
 #include "io/text_table.h"
 
+#include <algorithm>
 #include <ostream>
+#include <stdexcept>
 
 namespace tightfit {
 
 namespace {
 
-TextTable convergence_table(const ConvergenceStudy& study, int n_levels) {
+TextTable convergence_table(const ConvergenceStudy& study, int n_levels, double ratio) {
   TextTable table(
       "Mesh convergence of the mean pressure (" + std::to_string(n_levels) +
-          " levels, edge halved each level; GCI of the finest, Roache 1994)",
+          " levels, edge divided by " + format_number(ratio, 4) +
+          " each level; GCI of the finest, Roache 1994)",
       {"backend", "step", "alpha", "levels", "edge [mm]", "p fine [Pa]", "p Richardson [Pa]",
        "theory [Pa]", "order", "GCI [%]", "error fine [%]", "error Richardson [%]", "error order"});
   for (const ConvergenceSummaryRow& r : study.summary) {
@@ -42,21 +47,35 @@ int convergence_command(const CommandLine& cl, std::ostream& out) {
   share_output_by_rank(cl, parameters.output);
   const std::string dir =
       output_directory_for(cl, cl.case_files.front(), parameters.output.directory + "_convergence");
+  std::vector<std::string> known;
+  for (const BackendEntry& entry : backend_registry().entries()) known.push_back(entry.name);
+  for (const std::string& name : cl.convergence_backends)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw std::invalid_argument("--backends: no backend '" + name + "'" +
+                                  did_you_mean(name, known));
   std::vector<NamedBackendFactory> backends;
-  for (const BackendEntry& entry : backend_registry().entries()) {
-    const std::string name = entry.name;
+  for (const std::string& name : known) {
+    const auto& chosen = cl.convergence_backends;
+    if (!chosen.empty() && std::find(chosen.begin(), chosen.end(), name) == chosen.end()) continue;
     backends.push_back({name, [&file, name](const Problem& problem) {
                           return file.create_backend(name, problem);
                         }});
   }
+  ConvergenceSettings settings;
+  settings.n_levels = cl.levels;
+  settings.ratio = cl.refinement_ratio;
+  settings.regions = cl.convergence_regions;
   print_case_header(out, cl.case_files.front(), *make_scenario(parameters));
   out << "  convergence: " << cl.levels << " levels, mesh scale " << parameters.garment.mesh_scale
-      << " halved each level, on " << backends.size() << " backends (no VTU output)\n";
+      << " divided by " << settings.ratio << " each level, on " << backends.size() << " backend"
+      << (backends.size() == 1 ? "" : "s") << " (no VTU output)\n";
 
-  const ConvergenceStudy study = run_convergence_study(parameters, cl.levels, backends, dir, out);
-  out << "\n"
-      << convergence_table(study, cl.levels) << "  results in " << dir
-      << "/ (convergence.csv, convergence_summary.csv, <backend>/level_<k>/pressure.csv)\n";
+  const ConvergenceStudy study = run_convergence_study(parameters, settings, backends, dir, out);
+  out << "\n" << convergence_table(study, cl.levels, settings.ratio);
+  for (const TextTable& table : region_convergence_tables(study)) out << "\n" << table;
+  out << "  results in " << dir << "/ (convergence.csv, convergence_summary.csv"
+      << (study.regions.empty() ? "" : ", convergence_regions.csv, convergence_regions_summary.csv")
+      << ", <backend>/level_<k>/pressure.csv)\n";
   for (const BackendConvergence& b : study.backends)
     if (!b.completed) out << "  " << b.backend << " stopped early: " << b.failure << "\n";
   return study.completed() ? 0 : 1;

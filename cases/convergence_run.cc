@@ -1,6 +1,8 @@
 #include "cases/convergence_run.h"
 
+#include "cases/region_reader.h"
 #include "cases/scenario.h"
+#include "core/closest_names.h"
 #include "core/step_heartbeat.h"
 #include "io/csv_table.h"
 
@@ -36,6 +38,65 @@ std::vector<std::string> summary_columns() {
           "error_order"};
 }
 
+std::vector<std::string> region_columns() {
+  return {"backend", "level",  "mesh_scale", "n_vertices", "edge_m",          "step",
+          "alpha",   "region", "p_mean_Pa",  "p_peak_Pa",  "contact_area_m2", "n_contact_vertices"};
+}
+
+std::vector<std::string> region_summary_columns() {
+  return {"backend",
+          "step",
+          "alpha",
+          "region",
+          "n_levels",
+          "edge_fine_m",
+          "ratio",
+          "p_mean_fine_Pa",
+          "mean_order",
+          "mean_order_observed",
+          "p_mean_richardson_Pa",
+          "mean_gci_fine",
+          "p_peak_fine_Pa",
+          "peak_order",
+          "peak_order_observed",
+          "p_peak_richardson_Pa",
+          "peak_gci_fine",
+          "safety_factor"};
+}
+
+// The regions a study reads: the indices into the case's regions measurement of the names
+// asked for (all of them when none is), checked before anything runs.
+std::vector<std::size_t> chosen_regions(const CaseParameters& parameters,
+                                        const std::vector<std::string>& asked,
+                                        std::vector<std::string>* names) {
+  const CaseRegions case_regions = make_case_regions(parameters);
+  if (!case_regions.reader) {
+    if (asked.empty()) return {};
+    throw std::invalid_argument(
+        "--regions: the case measures no regions (Measurements/List does "
+        "not list regions), so there is no region '" +
+        asked.front() + "'");
+  }
+  std::vector<std::string> known;
+  for (const BodyRegion& region : case_regions.reader->regions()) known.push_back(region.name);
+  std::vector<std::size_t> indices;
+  if (asked.empty())
+    for (std::size_t k = 0; k < known.size(); ++k) indices.push_back(k);
+  for (const std::string& name : asked) {
+    const auto found = std::find(known.begin(), known.end(), name);
+    if (found == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw std::invalid_argument("--regions: no region '" + name +
+                                  "' in Measurements/Regions/Definitions (the case's regions: " +
+                                  list + ")" + did_you_mean(name, known));
+    }
+    indices.push_back(static_cast<std::size_t>(found - known.begin()));
+  }
+  for (std::size_t k : indices) names->push_back(known[k]);
+  return indices;
+}
+
 // A closed form to measure the error against: the scenario's, where it predicts contact.
 bool has_closed_form(double p_theory_Pa) {
   return std::isfinite(p_theory_Pa) && p_theory_Pa > 0;
@@ -45,10 +106,10 @@ double relative(double value, double reference) {
   return has_closed_form(reference) ? (value - reference) / reference : not_defined;
 }
 
-// The case with its edge lengths divided by 2^level and no VTU output.
-CaseParameters level_parameters(const CaseParameters& base, int level) {
+// The case with its edge lengths divided by ratio^level and no VTU output.
+CaseParameters level_parameters(const CaseParameters& base, int level, double ratio) {
   CaseParameters p = base;
-  const double factor = std::ldexp(1.0, -level);
+  const double factor = std::pow(ratio, -level);
   p.garment.mesh_scale *= factor;
   p.garment.spacing.along_x_m *= factor;  // Mesh scale was applied when the file was read
   p.garment.spacing.along_y_m *= factor;
@@ -91,10 +152,19 @@ double expected_seconds(const std::vector<LevelTiming>& done, int next_vertices,
   return last.seconds * std::pow(double(next_vertices) / last.n_vertices, order);
 }
 
-BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_levels,
+// Where a study's rows go (null: not written, on the other MPI ranks) and which regions it reads.
+struct StudyTables {
+  CsvTable* levels = nullptr;
+  CsvTable* regions = nullptr;
+  std::vector<std::size_t> region_indices;
+};
+
+BackendConvergence run_backend_levels(const CaseParameters& parameters,
+                                      const ConvergenceSettings& settings,
                                       const NamedBackendFactory& backend,
-                                      const std::string& output_dir, CsvTable* table,
+                                      const std::string& output_dir, const StudyTables& tables,
                                       const std::vector<int>& level_vertices, std::ostream& log) {
+  const int n_levels = settings.n_levels;
   namespace fs = std::filesystem;
   using clock = std::chrono::steady_clock;
   BackendConvergence study;
@@ -103,7 +173,7 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
   std::vector<LevelTiming> timings;
   for (int level = 0; level < n_levels; ++level) {
     const clock::time_point level_start = clock::now();
-    auto setup = make_scenario(level_parameters(parameters, level));
+    auto setup = make_scenario(level_parameters(parameters, level, settings.ratio));
     ConvergenceLevel l;
     l.level = level;
     l.mesh_scale = setup->parameters.garment.mesh_scale;
@@ -113,8 +183,28 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
         << ", " << l.n_vertices << " vertices, mean edge " << 1e3 * l.edge_m << " mm):\n";
     const std::string dir =
         (fs::path(output_dir) / backend.name / ("level_" + std::to_string(level))).string();
+    // The regions are read as the regions measurement reads them, each step as it finishes
+    // (its per-vertex arrays are then held): a copy of the measurement of this level's own,
+    // prepared on the body in its starting shape, as run_scenario prepares the run's.
+    CaseRegions regions;
+    if (!tables.region_indices.empty()) regions = make_case_regions(setup->parameters);
+    const StepObserver read_regions = [&](const StepMeasurement& m) {
+      if (!regions.reader) return;
+      if (l.region_pressures.empty()) regions.measurement->prepare(*setup);
+      const std::vector<RegionPressure> all = regions.reader->region_pressures(*setup, m);
+      std::vector<RegionPressure> chosen;
+      for (std::size_t k : tables.region_indices) {
+        chosen.push_back(all[k]);
+        if (tables.regions)
+          tables.regions->write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m,
+                                     m.step, m.alpha, regions.reader->regions()[k].name,
+                                     all[k].mean_Pa, all[k].peak_Pa, all[k].contact_area_m2,
+                                     all[k].n_contact_vertices});
+      }
+      l.region_pressures.push_back(std::move(chosen));
+    };
     try {
-      l.run = run_scenario(*setup, backend.create, dir, log);
+      l.run = run_scenario(*setup, backend.create, dir, log, read_regions);
     } catch (const std::exception& e) {
       // A backend that cannot even start (bad subsection, failed allocation) stops its own
       // study, not the other backends'.
@@ -124,14 +214,14 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters, int n_le
     // The study reads the steps' scalars only; each level's files are written.
     for (StepMeasurement& m : l.run.steps) release_vertex_arrays(m);
     for (const StepMeasurement& m : l.run.steps)
-      if (table)
-        table->write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step,
-                          m.alpha, m.p_mean_Pa(), m.p_theory_Pa,
-                          relative(m.p_mean_Pa(), m.p_theory_Pa)});
+      if (tables.levels)
+        tables.levels->write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step,
+                                  m.alpha, m.p_mean_Pa(), m.p_theory_Pa,
+                                  relative(m.p_mean_Pa(), m.p_theory_Pa)});
     const bool completed = l.run.completed;
     const std::string failure = l.run.failure;
-    timings.push_back(
-        {l.n_vertices, std::chrono::duration<double>(clock::now() - level_start).count()});
+    l.seconds = std::chrono::duration<double>(clock::now() - level_start).count();
+    timings.push_back({l.n_vertices, l.seconds});
     log << "  " << backend.name << " level " << level << " took "
         << duration_text(timings.back().seconds) << " (this backend so far "
         << duration_text(std::chrono::duration<double>(clock::now() - study_start).count()) << ")";
@@ -175,10 +265,8 @@ std::vector<ConvergenceSummaryRow> summarise_convergence(const BackendConvergenc
         edges_m.push_back(l.edge_m);
       }
     if (pressures_Pa.size() < 2) continue;
-    const std::size_t n = pressures_Pa.size(), used = std::min<std::size_t>(n, 3);
-    // Measured refinement ratio over the levels the estimate uses: whole numbers of divisions
-    // make the mean edge halve only nearly.
-    const double ratio = std::pow(edges_m[n - used] / edges_m[n - 1], 1.0 / (used - 1));
+    const std::size_t n = pressures_Pa.size();
+    const double ratio = measured_refinement_ratio(edges_m);
 
     const StepMeasurement& fine = study.levels[n - 1].run.steps[step];
     ConvergenceSummaryRow row;
@@ -199,19 +287,56 @@ std::vector<ConvergenceSummaryRow> summarise_convergence(const BackendConvergenc
   return rows;
 }
 
-ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_levels,
+std::vector<RegionConvergenceRow> summarise_region_convergence(
+    const BackendConvergence& study, const std::vector<std::string>& regions) {
+  std::vector<RegionConvergenceRow> rows;
+  std::size_t n_steps = 0;
+  for (const ConvergenceLevel& l : study.levels)
+    n_steps = std::max(n_steps, l.region_pressures.size());
+  for (std::size_t step = 0; step < n_steps; ++step) {
+    // Levels are coarse to fine; a step counts on the levels that finished it.
+    std::vector<double> edges_m;
+    std::vector<std::vector<RegionLevelPressure>> pressures;
+    const ConvergenceLevel* finest = nullptr;
+    for (const ConvergenceLevel& l : study.levels)
+      if (step < l.region_pressures.size() && step < l.run.steps.size()) {
+        edges_m.push_back(l.edge_m);
+        std::vector<RegionLevelPressure> level;
+        for (const RegionPressure& r : l.region_pressures[step])
+          level.push_back({r.mean_Pa, r.peak_Pa});
+        pressures.push_back(std::move(level));
+        finest = &l;
+      }
+    if (pressures.size() < 2) continue;
+    for (const RegionConvergence& r :
+         estimate_region_convergence(regions, edges_m, pressures, formal_order))
+      rows.push_back(
+          {study.backend, finest->run.steps[step].step, finest->run.steps[step].alpha, r});
+  }
+  return rows;
+}
+
+ConvergenceStudy run_convergence_study(const CaseParameters& parameters,
+                                       const ConvergenceSettings& settings,
                                        const std::vector<NamedBackendFactory>& backends,
                                        const std::string& output_dir, std::ostream& log) {
   namespace fs = std::filesystem;
+  const int n_levels = settings.n_levels;
   if (n_levels < 2)
     throw std::invalid_argument("a convergence study needs at least two levels, not " +
                                 std::to_string(n_levels));
+  if (!(settings.ratio > 1.0) || !std::isfinite(settings.ratio))
+    throw std::invalid_argument("the refinement ratio of a convergence study must exceed 1, not " +
+                                std::to_string(settings.ratio));
+  ConvergenceStudy result;
+  StudyTables tables;
+  tables.region_indices = chosen_regions(parameters, settings.regions, &result.regions);
   // Check every level's setup before running any, so a bad mesh scale does not surface after
   // the coarse levels have run for minutes.
   std::vector<int> level_vertices;
   std::vector<std::size_t> level_triangles;
   for (int level = 0; level < n_levels; ++level) {
-    const auto setup = make_scenario(level_parameters(parameters, level));
+    const auto setup = make_scenario(level_parameters(parameters, level, settings.ratio));
     level_vertices.push_back(setup->mesh.n_vertices);
     level_triangles.push_back(setup->mesh.triangles.size());
   }
@@ -219,16 +344,22 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
 
   // Under MPI every rank runs the study (the FE solves are distributed); the first writes the
   // tables, as run_scenario does for each level's own.
-  std::optional<CsvTable> table, summary;
+  std::optional<CsvTable> table, summary, region_table, region_summary;
   if (parameters.output.write_files && parameters.output.is_first_rank()) {
+    const auto path = [&](const char* name) { return (fs::path(output_dir) / name).string(); };
     fs::create_directories(output_dir);
-    table.emplace((fs::path(output_dir) / "convergence.csv").string(), convergence_columns());
-    summary.emplace((fs::path(output_dir) / "convergence_summary.csv").string(), summary_columns());
+    table.emplace(path("convergence.csv"), convergence_columns());
+    summary.emplace(path("convergence_summary.csv"), summary_columns());
+    if (!result.regions.empty()) {
+      region_table.emplace(path("convergence_regions.csv"), region_columns());
+      region_summary.emplace(path("convergence_regions_summary.csv"), region_summary_columns());
+    }
   }
-  ConvergenceStudy result;
+  tables.levels = table ? &*table : nullptr;
+  tables.regions = region_table ? &*region_table : nullptr;
   for (const NamedBackendFactory& backend : backends) {
-    result.backends.push_back(run_backend_levels(parameters, n_levels, backend, output_dir,
-                                                 table ? &*table : nullptr, level_vertices, log));
+    result.backends.push_back(
+        run_backend_levels(parameters, settings, backend, output_dir, tables, level_vertices, log));
     for (const ConvergenceSummaryRow& r : summarise_convergence(result.backends.back())) {
       const ConvergenceEstimate& e = r.estimate;
       if (summary)
@@ -237,6 +368,17 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters, int n_l
                             e.extrapolated, e.gci_fine, e.safety_factor, r.rel_error_fine,
                             r.rel_error_richardson, e.error_order});
       result.summary.push_back(r);
+    }
+    for (const RegionConvergenceRow& row :
+         summarise_region_convergence(result.backends.back(), result.regions)) {
+      const RegionConvergence& r = row.estimate;
+      if (region_summary)
+        region_summary->write_row(
+            {row.backend, row.step, row.alpha, r.region, r.n_levels, r.edge_fine_m, r.ratio,
+             r.mean_fine_Pa, r.mean.order, r.mean.order_observed ? 1 : 0, r.mean.extrapolated,
+             r.mean.gci_fine, r.peak_fine_Pa, r.peak.order, r.peak.order_observed ? 1 : 0,
+             r.peak.extrapolated, r.peak.gci_fine, r.mean.safety_factor});
+      result.region_summary.push_back(row);
     }
   }
   return result;

@@ -5,6 +5,7 @@
 #include "cases/csv_measurement.h"
 #include "cases/parts/part_entries.h"
 #include "cases/region_pressure.h"
+#include "cases/region_reader.h"
 #include "cases/scenario_landmarks.h"
 #include "cases/step_measurement.h"
 #include "core/units.h"
@@ -19,7 +20,7 @@ std::string note(const RegionPressure& r) {
   return r.garment_area_m2 > 0 ? "no contact" : "no garment in the region";
 }
 
-class RegionsMeasurement final : public CsvMeasurement {
+class RegionsMeasurement final : public CsvMeasurement, public RegionReader {
  public:
   explicit RegionsMeasurement(std::vector<BodyRegion> regions)
       : CsvMeasurement("regions.csv", {"step", "alpha", "region", "contact_area_m2", "p_mean_Pa",
@@ -28,6 +29,14 @@ class RegionsMeasurement final : public CsvMeasurement {
         regions_(std::move(regions)) {}
 
   void prepare(const Scenario& scenario) override { resolve_named_regions(regions_, scenario); }
+
+  const std::vector<BodyRegion>& regions() const override { return regions_; }
+  std::vector<RegionPressure> region_pressures(const Scenario& scenario,
+                                               const StepMeasurement& m) const override {
+    std::vector<RegionPressure> pressures;
+    for (const BodyRegion& region : regions_) pressures.push_back(measure(scenario, m, region));
+    return pressures;
+  }
 
   std::vector<TextTable> summary_tables(const Scenario& /*scenario*/,
                                         const std::vector<StepMeasurement>& steps) const override {
@@ -52,12 +61,11 @@ class RegionsMeasurement final : public CsvMeasurement {
   std::vector<std::vector<CsvCell>> rows(const Scenario& scenario,
                                          const StepMeasurement& m) override {
     std::vector<std::vector<CsvCell>> rows;
-    last_.clear();
+    last_ = region_pressures(scenario, m);
     last_step_ = m.step;
-    for (const BodyRegion& region : regions_) {
-      const RegionPressure r = measure(scenario, m, region);
-      last_.push_back(r);
-      rows.push_back({m.step, m.alpha, region.name, r.contact_area_m2, r.mean_Pa, r.peak_Pa,
+    for (std::size_t k = 0; k < regions_.size(); ++k) {
+      const RegionPressure& r = last_[k];
+      rows.push_back({m.step, m.alpha, regions_[k].name, r.contact_area_m2, r.mean_Pa, r.peak_Pa,
                       units::to_mmHg(r.mean_Pa), units::to_mmHg(r.peak_Pa), r.normal_force_N,
                       r.n_contact_vertices, r.garment_area_m2, note(r)});
     }
@@ -77,6 +85,17 @@ class RegionsMeasurement final : public CsvMeasurement {
 };
 
 }  // namespace
+
+CaseRegions make_case_regions(const CaseParameters& parameters) {
+  CaseRegions found;
+  for (const NamedMeasurement& m : parameters.measurements)
+    if (m.kind == "regions") {
+      found.measurement = m.make();
+      found.reader = dynamic_cast<RegionsMeasurement*>(found.measurement.get());
+      break;
+    }
+  return found;
+}
 
 PartEntry<MeasurementMaker> regions_measurement_entry() {
   PartEntry<MeasurementMaker> e;
