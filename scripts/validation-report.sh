@@ -2,7 +2,8 @@
 # Regenerates docs/validation.md and docs/figures/ from scratch: runs the paper's cylinder
 # cases, the cross-backend comparison, the cylinder with gravity, the paper's pressure
 # definition, and a mesh-convergence study at modest levels, then draws the figures and
-# writes the tables. A few minutes on two cores.
+# writes the tables. A few minutes on two cores. The stocking's convergence study by region
+# (scripts/stocking-convergence.sh) is rendered from the tables it keeps in docs/figures/.
 #
 # Usage: scripts/validation-report.sh [--levels N]   (convergence levels, default 3)
 #   TIGHTFIT=path/to/tightfit overrides the executable (default build/app/tightfit).
@@ -296,5 +297,8 @@ the discretisation's, the same for either solver. Quadratic triangles (\`Finite
 elements/Element degree = 2\`) follow the circle and leave errors of about 1e-6 on either
 mesh.
 MD
+  # The stocking's study by region takes about 20 minutes: rendered from the tables
+  # scripts/stocking-convergence.sh keeps in docs/figures/, not run here.
+  scripts/stocking-convergence-section.sh "$figures"
 } >"$report"
 echo "wrote $report and $figures/ in ${elapsed} s of runs"

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Prints the section "Mesh convergence on a body" of docs/validation.md from the stocking
+# study's tables kept in docs/figures/ (scripts/stocking-convergence.sh writes them; the study
+# takes about 20 minutes, so scripts/validation-report.sh renders the section from them
+# without running it).
+# Usage: scripts/stocking-convergence-section.sh [FIGURES_DIR]   (default docs/figures)
+set -uo pipefail
+figures=${1:-docs/figures}
+levels=$figures/stocking_convergence_regions.csv
+summary=$figures/stocking_convergence_regions_summary.csv
+times=$figures/stocking_convergence_times.csv
+cat <<'MD'
+
+## Mesh convergence on a body (the stocking)
+
+The stocking (`cases/stocking_female.prm`, [stocking.md](stocking.md)) at three meshes, the
+edge lengths divided by sqrt(2) from one level to the next, on the mass-spring backend; each
+level's mean and peak pressure in the bands B, C and G round the leg's measuring points, the
+observed order from the three levels, the Richardson estimate and Roache's GCI (safety factor
+1.25) of the finest level (columns in cases/convergence_run.h):
+
+    tightfit convergence cases/stocking_female.prm --levels 3 --ratio 1.41421356 \
+      --backends massspring --set "Measurements/List=regions, compression class" \
+      --set "Solver/Relative tolerance=5e-4"
+
+(`scripts/stocking-convergence.sh` runs it and redraws the figure and these tables.)
+MD
+if [[ ! -s $summary || ! -s $levels ]]; then
+  echo
+  echo "_The stocking's study has not been run: scripts/stocking-convergence.sh._"
+  exit 0
+fi
+echo
+# Levels: size, time and each region's mean pressure with its distance from the limit: the
+# Richardson value, or the finest level's where the levels oscillate (no order, marked *).
+awk -F, 'FNR == 1 {delete c; for (i = 1; i <= NF; i++) c[$i] = i; ++file; next}
+  file == 1 { if (!($c["region"] in rich)) names[++nr] = $c["region"]; rich[$c["region"]] = $c["p_mean_richardson_Pa"]; next }
+  file == 2 { t[$c["level"]] = $c["seconds"]; next }
+  { l = $c["level"]; if (l > nl) nl = l; nv[l] = $c["n_vertices"]; h[l] = $c["edge_m"]; p[l, $c["region"]] = $c["p_mean_Pa"] }
+  END {
+    line = "| level | vertices | mean edge [mm] | time [s] |"; rule = "| ---: | ---: | ---: | ---: |"
+    for (k = 1; k <= nr; k++) { r = names[k]; line = line " " r " p_mean [Pa] | from " (rich[r] == "" ? "finest* " : "Richardson ") "[%] |"; rule = rule " ---: | ---: |" }
+    print line; print rule
+    for (l = 0; l <= nl; l++) {
+      line = sprintf("| %d | %d | %.2f | %s |", l, nv[l], 1e3 * h[l], (l in t) ? sprintf("%.0f", t[l]) : "-")
+      for (k = 1; k <= nr; k++) { r = names[k]; v = p[l, r]; ref = (rich[r] == "") ? p[nl, r] : rich[r]
+        line = line sprintf(" %.1f | %+.2f |", v, 100 * (v - ref) / ref) }
+      print line }
+  }' "$summary" "$times" "$levels"
+echo
+# The estimates, mean and peak, and where the mean has an order, the mesh it needs to come
+# within 1% of its limit: |p_h - p_R| / p_R = e_f (h / h_f)^p, so h_1% = h_f (1 / e_f)^(1/p)
+# with e_f in %, the vertices growing as (h_f / h)^2.
+awk -F, 'FNR == 1 {delete c; for (i = 1; i <= NF; i++) c[$i] = i; ++file; next}
+  file == 1 { if ($c["level"] >= fine) { fine = $c["level"]; n_fine = $c["n_vertices"] }; next }
+  {
+    if (!header++) {
+      print "| region | p_mean fine [Pa] | order | Richardson [Pa] | GCI [%] | p_peak fine [Pa] | order | Richardson [Pa] | GCI [%] | edge for 1% [mm] | vertices for 1% |"
+      print "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |" }
+    f = $c["p_mean_fine_Pa"]; R = $c["p_mean_richardson_Pa"]; p = $c["mean_order"]; hf = 1e3 * $c["edge_fine_m"]
+    e = 100 * (f - R) / R; if (e < 0) e = -e
+    h1 = "-"; n1 = "-"
+    if (p != "" && R != "" && e > 0) { h1 = sprintf("%.1f", hf * (1 / e) ^ (1 / p)); n1 = sprintf("%.0f", n_fine * (1 / e) ^ (-2 / p)) }
+    printf "| %s | %.1f | %s | %s | %s | %.1f | %s | %s | %s | %s | %s |\n", $c["region"], f,
+      (p == "" ? "-" : sprintf("%.2f", p)), (R == "" ? "-" : sprintf("%.1f", R)),
+      ($c["mean_gci_fine"] == "" ? "-" : sprintf("%.2f", 100 * $c["mean_gci_fine"])), $c["p_peak_fine_Pa"],
+      ($c["peak_order"] == "" ? "-" : sprintf("%.2f", $c["peak_order"])),
+      ($c["p_peak_richardson_Pa"] == "" ? "-" : sprintf("%.1f", $c["p_peak_richardson_Pa"])),
+      ($c["peak_gci_fine"] == "" ? "-" : sprintf("%.2f", 100 * $c["peak_gci_fine"])), h1, n1
+  }' "$levels" "$summary"
+echo
+echo "![The bands' mean pressure against its Richardson estimate](figures/stocking_convergence.png)"

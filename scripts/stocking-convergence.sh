@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The stocking's mesh-convergence study by region (docs/validation.md, "Mesh convergence on a
+# body"): cases/stocking_female.prm at three levels, the edge lengths divided by sqrt(2) from
+# one to the next (1312, 2736 and 5120 garment vertices), on the mass-spring backend, with the
+# regions B, C and G. Keeps the study's region tables and level times in docs/figures/
+# (stocking_convergence_*.csv), draws docs/figures/stocking_convergence.png, and prints the
+# section of docs/validation.md that scripts/validation-report.sh renders from them.
+#
+# Usage: scripts/stocking-convergence.sh [--reuse]
+#   --reuse  draws from output/stocking_convergence/ and its study.log, without running.
+#   TIGHTFIT=path/to/tightfit overrides the executable (default build/app/tightfit).
+# About 20 minutes of one core (docs/validation.md lists each level's time).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tightfit=${TIGHTFIT:-build/app/tightfit}
+out=output/stocking_convergence
+figures=docs/figures
+if [[ ${1:-} != --reuse ]]; then
+  [[ -x $tightfit ]] || { echo "no $tightfit: build first (scripts/build.sh)" >&2; exit 2; }
+  rm -rf "$out"
+  mkdir -p "$out"
+  # Solver/Relative tolerance 5e-4: at the default 1e-4 the 2736-vertex level stalls at three
+  # times it (docs/validation.md says why and what the looser rule changes).
+  "$tightfit" convergence cases/stocking_female.prm --levels 3 --ratio 1.41421356 \
+    --backends massspring --set "Measurements/List=regions, compression class" \
+    --set "Solver/Relative tolerance=5e-4" --output "$out" | tee "$out/study.log"
+fi
+[[ -s $out/convergence_regions_summary.csv ]] || { echo "no $out/convergence_regions_summary.csv" >&2; exit 1; }
+mkdir -p "$figures"
+cp "$out/convergence_regions.csv" "$figures/stocking_convergence_regions.csv"
+cp "$out/convergence_regions_summary.csv" "$figures/stocking_convergence_regions_summary.csv"
+# Each level's wall time, from the study's progress lines ("massspring level 1 took 2.5 min").
+awk 'BEGIN {print "backend,level,seconds"}
+  / level [0-9]+ took / {
+    for (i = 1; i <= NF; ++i) if ($i == "took") { t = $(i + 1); u = $(i + 2) }
+    sub(/[;(].*/, "", u); s = t * (u ~ /^min/ ? 60 : u ~ /^h/ ? 3600 : 1)
+    print $1 "," $3 "," s }' "$out/study.log" >"$figures/stocking_convergence_times.csv"
+gnuplot -e "levels='$figures/stocking_convergence_regions.csv'; \
+  summary='$figures/stocking_convergence_regions_summary.csv'; \
+  out='$figures/stocking_convergence.png'; regions='B C G'" scripts/plots/region_convergence.gp
+scripts/stocking-convergence-section.sh "$figures"
