@@ -184,8 +184,9 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters,
     const std::string dir =
         (fs::path(output_dir) / backend.name / ("level_" + std::to_string(level))).string();
     // The regions are read as the regions measurement reads them, each step as it finishes
-    // (its per-vertex arrays are then held): a copy of the measurement of this level's own,
-    // prepared on the body in its starting shape, as run_scenario prepares the run's.
+    // (its per-vertex arrays are then held): this level's own copy of the measurement, its
+    // named shapes resolved when load step 0 finishes, on the body in the starting shape that
+    // run_scenario prepared the run's own on.
     CaseRegions regions;
     if (!tables.region_indices.empty()) regions = make_case_regions(setup->parameters);
     const StepObserver read_regions = [&](const StepMeasurement& m) {
