@@ -6,36 +6,46 @@
 # (stocking_convergence_*.csv), draws docs/figures/stocking_convergence.png, and prints the
 # section of docs/validation.md that scripts/validation-report.sh renders from them.
 #
-# Usage: scripts/stocking-convergence.sh [--reuse]
-#   --reuse  draws from output/stocking_convergence/ and its study.log, without running.
+# Usage: scripts/stocking-convergence.sh [--ratio 2] [--reuse]
+#   --ratio 2  the edge lengths halved from level to level instead: 1312, 5120 and 21760
+#              vertices (about 40 minutes of one core), kept as stocking_convergence_r2_*.
+#   --reuse    draws from output/stocking_convergence[_r2]/ and its study.log, without running.
 #   TIGHTFIT=path/to/tightfit overrides the executable (default build/app/tightfit).
 # About 20 minutes of one core (docs/validation.md lists each level's time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tightfit=${TIGHTFIT:-build/app/tightfit}
-out=output/stocking_convergence
+ratio=1.41421356 name=stocking_convergence reuse=false
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --ratio) ratio=2 name=stocking_convergence_r2; [[ ${2:-} == 2 ]] || { echo "--ratio takes 2" >&2; exit 2; }; shift ;;
+    --reuse) reuse=true ;;
+    *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+out=output/$name
 figures=docs/figures
-if [[ ${1:-} != --reuse ]]; then
+if [[ $reuse == false ]]; then
   [[ -x $tightfit ]] || { echo "no $tightfit: build first (scripts/build.sh)" >&2; exit 2; }
   rm -rf "$out"
   mkdir -p "$out"
   # Solver/Relative tolerance 5e-4: at the default 1e-4 the 2736-vertex level stalls at three
   # times it (docs/validation.md says why and what the looser rule changes).
-  "$tightfit" convergence cases/stocking_female.prm --levels 3 --ratio 1.41421356 \
+  "$tightfit" convergence cases/stocking_female.prm --levels 3 --ratio "$ratio" \
     --backends massspring --set "Measurements/List=regions, compression class" \
     --set "Solver/Relative tolerance=5e-4" --output "$out" | tee "$out/study.log"
 fi
 [[ -s $out/convergence_regions_summary.csv ]] || { echo "no $out/convergence_regions_summary.csv" >&2; exit 1; }
 mkdir -p "$figures"
-cp "$out/convergence_regions.csv" "$figures/stocking_convergence_regions.csv"
-cp "$out/convergence_regions_summary.csv" "$figures/stocking_convergence_regions_summary.csv"
+cp "$out/convergence_regions.csv" "$figures/${name}_regions.csv"
+cp "$out/convergence_regions_summary.csv" "$figures/${name}_regions_summary.csv"
 # Each level's wall time, from the study's progress lines ("massspring level 1 took 2.5 min").
 awk 'BEGIN {print "backend,level,seconds"}
   / level [0-9]+ took / {
     for (i = 1; i <= NF; ++i) if ($i == "took") { t = $(i + 1); u = $(i + 2) }
     sub(/[;(].*/, "", u); s = t * (u ~ /^min/ ? 60 : u ~ /^h/ ? 3600 : 1)
-    print $1 "," $3 "," s }' "$out/study.log" >"$figures/stocking_convergence_times.csv"
-gnuplot -e "levels='$figures/stocking_convergence_regions.csv'; \
-  summary='$figures/stocking_convergence_regions_summary.csv'; \
-  out='$figures/stocking_convergence.png'; regions='B C G'" scripts/plots/region_convergence.gp
+    print $1 "," $3 "," s }' "$out/study.log" >"$figures/${name}_times.csv"
+gnuplot -e "levels='$figures/${name}_regions.csv'; summary='$figures/${name}_regions_summary.csv'; \
+  out='$figures/$name.png'; regions='B C G'" scripts/plots/region_convergence.gp
 scripts/stocking-convergence-section.sh "$figures"
