@@ -112,8 +112,8 @@ would hold one ring of vertices or none.
 
 The FE backend on the case's own mesh (1312 vertices, the same command with `--backends fem`)
 reads B 3358.0, C 1687.1 and G 893.4 Pa, the mass-spring backend's to 1e-5 (B, C) and 4e-5
-(G); its 2736-vertex level is slower (189 Newton iterations in 3.5 min of CPU, against 325
-iterations in 100 s on the 1312 mesh), and its study is not in this page.
+(G). Its finer levels are slower: on the same shared machine the 1312 level took 325 Newton
+iterations in 102 s, the 2736 level had done 189 in 16 min; its study is not in this page.
 MD
 if [[ -s $figures/stocking_convergence_r2_regions_summary.csv ]]; then
   cat <<'MD'
