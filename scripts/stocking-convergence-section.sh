@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Prints the section "Mesh convergence on a body" of docs/validation.md from the stocking
-# study's tables kept in docs/figures/ (scripts/stocking-convergence.sh writes them; the study
-# takes about 20 minutes, so scripts/validation-report.sh renders the section from them
-# without running it).
+# studies' tables kept in docs/figures/ (scripts/stocking-convergence.sh writes them; a study
+# takes minutes of CPU, so scripts/validation-report.sh renders the section from them without
+# running it).
 # Usage: scripts/stocking-convergence-section.sh [FIGURES_DIR]   (default docs/figures)
 set -uo pipefail
 figures=${1:-docs/figures}
@@ -58,48 +58,52 @@ cat <<'MD'
 ## Mesh convergence on a body (the stocking)
 
 The stocking (`cases/stocking_female.prm`, [stocking.md](stocking.md)) at three meshes, the
-edge lengths divided by sqrt(2) from one level to the next, on the mass-spring backend; each
-level's mean and peak pressure in the bands B, C and G round the leg's measuring points, the
-observed order from the three levels, the Richardson estimate and Roache's GCI (safety factor
-1.25) of the finest level (columns in cases/convergence_run.h):
+edge lengths halved from one level to the next (the case's own mesh, `Mesh scale` 0.5 and
+0.25), on the mass-spring backend; each level's mean and peak pressure in the 2 cm bands B, C
+and G round the leg's measuring points, the observed order from the three levels, the
+Richardson estimate and Roache's GCI (safety factor 1.25) of the finest level (columns in
+cases/convergence_run.h):
 
-    tightfit convergence cases/stocking_female.prm --levels 3 --ratio 1.41421356 \
-      --backends massspring --set "Measurements/List=regions, compression class" \
-      --set "Solver/Relative tolerance=5e-4"
+    tightfit convergence cases/stocking_female.prm --levels 3 --backends massspring \
+      --set "Measurements/List=regions, compression class" --set "Solver/Relative tolerance=5e-4"
 
 (`scripts/stocking-convergence.sh` runs it and redraws the figure and these tables.) The times
-are wall times on a two-core machine shared with other work, where the study had about a
-quarter of a core (70 s of CPU for the three levels).
+are wall times on a two-core machine shared with other work, where the study had about a third
+of a core (391 s of CPU for the three levels, 20 min in all).
 MD
 if [[ ! -s $figures/stocking_convergence_regions_summary.csv ]]; then
   echo
   echo "_The stocking's study has not been run: scripts/stocking-convergence.sh._"
   exit 0
 fi
+echo
 tables stocking_convergence
 echo
-echo "![The bands' mean pressure against its limit](figures/stocking_convergence.png)"
+echo "![The bands' mean pressure against its Richardson estimate](figures/stocking_convergence.png)"
 cat <<'MD'
 
-How fine must a stocking's mesh be for B, C and G to be within 1% of the limit? From these
-levels: C's mean is within 0.3% on every mesh; G converges monotonically at the order of linear
-triangles (about 2) and comes within 1% from a mean edge of about 12 mm (about 1650 vertices:
-the case's own 1312 read 1.3% low, 2736 0.6%); B rises 2.1% from 1312 to 2736 vertices and
-then moves by 0.1% of the opposite sign, as C does by 0.01%: both oscillate at the 0.1% level
-(the band's rings of vertices and the share of their cells inside it change from mesh to mesh),
-so the study observes no order for them and their finest level stands for the limit. All three
-are within 1% from 2736 vertices (a mean edge of 9.4 mm, `Garment/Mesh scale = 0.71`): the
-case's own mesh reads B 2% and G 1.3% low.
+How fine must a stocking's mesh be for B, C and G to be within 1% of the extrapolated value?
+All three bands converge monotonically, B and G at about the order of linear triangles (2.4),
+C at about first order on changes that stay small (0.5% from the coarsest level to the
+limit). By the observed orders, C is within 1% on every mesh, G from a mean edge of about
+12.7 mm (about 1500 vertices) and B from about 9.2 mm (about 2800 vertices); the 2736-vertex
+mesh of the study below (`Garment/Mesh scale = 0.71`, mean edge 9.4 mm) measured all three
+within 0.6% of these estimates. So a stocking needs about 2800 vertices, a mean edge of 9 mm,
+for its bands to be within 1%; the case's own mesh (1312 vertices, 13.5 mm) reads B 2.4%,
+G 1.1% and C 0.5% low. The finest level's GCI is 0.11% (B), 0.14% (C) and 0.05% (G).
 
-The peaks do not converge: the largest vertex pressure in B falls from 11.8 to 8.2 kPa and
-rises to 8.7 kPa (one vertex at the ankle's tendons, where each mesh resolves the curvature
+The whole garment's mean pressure (the first table the command prints) converges more slowly:
+observed order 0.7, its finest level 1.7% below its estimate (GCI 2.2%). Quote the bands.
+
+The peaks do not converge: the largest vertex pressure in B falls from 11.8 to 8.7 kPa and
+rises to 9.0 kPa (one vertex at the ankle's tendons, where each mesh resolves the curvature
 differently); the bands' means are the numbers to quote.
 
 The settle's stop rule: at the default `Solver/Relative tolerance = 1e-4` the 2736-vertex level
-stalls at three times its tolerance (2.1e-5 N against 6.8e-6 N, after 12 000 frames, on a
-vertex over the shin) and the study stops there. At 5e-4 every level finishes; on the 1312
-mesh, which settles either way, the looser rule moves the means of B, C and G by at most 1.1e-6
-of their value and the peaks by at most 5e-4, far below the differences between levels.
+(below) stalls at three times its tolerance (2.1e-5 N against 6.8e-6 N, after 12 000 frames, on
+a vertex over the shin). At 5e-4 every level finishes; on the 1312 mesh, which settles either
+way, the looser rule moves the means of B, C and G by at most 1.1e-6 of their value and the
+peaks by at most 5e-4, far below the differences between levels.
 
 A coarser level cannot work: at `Garment/Mesh scale = 2` (336 vertices, mean edge 2.7 cm)
 neither backend settles. The mass-spring backend stalls at ten times the tolerance (5.7e-4 N
@@ -115,14 +119,18 @@ reads B 3358.0, C 1687.1 and G 893.4 Pa, the mass-spring backend's to 1e-5 (B, C
 (G). Its finer levels are slower: on the same shared machine the 1312 level took 325 Newton
 iterations in 102 s, the 2736 level had done 189 in 16 min; its study is not in this page.
 MD
-if [[ -s $figures/stocking_convergence_r2_regions_summary.csv ]]; then
+if [[ -s $figures/stocking_convergence_sqrt2_regions_summary.csv ]]; then
   cat <<'MD'
 
-With the edge lengths halved from one level to the next (`--ratio 2`,
-`scripts/stocking-convergence.sh --ratio 2`), up to about 20 000 vertices:
+With the edge lengths divided by sqrt(2) from one level to the next (`--ratio 1.41421356`,
+`scripts/stocking-convergence.sh --sqrt2`; 70 s of CPU): at 2736 vertices B, C and G lie 0.35%,
+0.24% and 0.53% below the estimates above, within 1% as predicted. Between 2736 and 5120
+vertices B and C move by 0.1% and 0.01% against the trend (the band's rings of vertices and
+the share of their cells inside it change from mesh to mesh), so from these three levels alone
+the study observes no order for them:
 
 MD
-  tables stocking_convergence_r2
+  tables stocking_convergence_sqrt2
   echo
-  echo "![The bands' mean pressure against its limit, edge halved each level](figures/stocking_convergence_r2.png)"
+  echo "![The same, edge divided by sqrt(2) each level](figures/stocking_convergence_sqrt2.png)"
 fi
