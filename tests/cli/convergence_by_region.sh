@@ -3,7 +3,8 @@
 # summary region tables hold one row per level, step and region, the region away from the
 # garment reads empty, the summary's order, Richardson value and GCI are those of its own
 # level rows (recomputed here from convergence_regions.csv by Roache's formulas), and the region
-# round the whole garment reads the whole garment's mean pressure.
+# round the whole garment reads the whole garment's mean pressure, and every level's rows are
+# those of the level's own regions.csv.
 #   convergence_by_region.sh TIGHTFIT CASE OUTPUT_DIR
 set -eu
 tightfit=$1 case_file=$2 out=$3
@@ -58,6 +59,12 @@ awk -F, 'FNR == 1 { ++file; next }
       if (d * d > 1e-8 || whole[l] == "") { printf "level %d: region all %s Pa, garment %s Pa\n", l, all[l], whole[l]; exit 1 }
     }
   }' "$out/convergence.csv" "$levels"
+# The study reads each level's regions as the level's own run writes them (regions.csv).
+for level in 0 1 2; do
+  diff <(awk -F, -v l=$level 'NR > 1 && $2 == l {print $6 "," $8 "," $9 "," $10 "," $11}' "$levels") \
+    <(awk -F, 'NR > 1 {print $1 "," $3 "," $5 "," $6 "," $4}' "$out/massspring/level_$level/regions.csv") ||
+    { echo "level $level: convergence_regions.csv differs from the level's regions.csv"; exit 1; }
+done
 grep -q "Mesh convergence by region" "$out.log" || { echo "no region summary on screen"; exit 1; }
 grep -q -E "^ *massspring +2 +middle +3 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ " "$out.log" ||
   { echo "no middle row in the summary on screen"; cat "$out.log"; exit 1; }
