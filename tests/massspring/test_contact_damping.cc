@@ -138,5 +138,40 @@ TEST(ContactNormalDamping, LeavesTheStableStateOfATubeOnACylinder) {
               plain_report.iterations, damped_report.iterations, total_plain_N, total_damped_N);
 }
 
+// The friction spring's stick damper (Mass spring/Contact stick damping ratio) acts on the
+// velocities of sticking vertices only: the tube held on the cylinder by friction settles to
+// the same positions and contact forces with it (zeta 1) as without.
+TEST(ContactStickDamping, LeavesTheStableStateOfATubeHeldByFriction) {
+  auto settle = [](double zeta) {
+    test::TubeOnCylinder tube(0.157, MeshSpacing{});
+    tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+    tube.problem.friction_coefficient = 0.3;
+    tube.problem.tangential_stiffness_Pa_per_m = tube.problem.contact_stiffness_Pa_per_m;
+    MassSpringParameters parameters;
+    parameters.contact_updates = 0;
+    parameters.contact_stick_damping_ratio = zeta;
+    MassSpringBackend backend(tube.problem, parameters);
+    backend.set_positions(tube.start_positions());
+    const StepReport report = backend.solve(LoadStep{0, 1.3, false});
+    return std::make_pair(backend.state(), report);
+  };
+  const auto [plain, plain_report] = settle(0.0);
+  const auto [damped, damped_report] = settle(1.0);
+  ASSERT_EQ(plain.size(), damped.size());
+  double total_plain_N = 0.0, total_damped_N = 0.0, largest_shift_m = 0.0;
+  for (std::size_t v = 0; v < plain.size(); ++v) {
+    total_plain_N += plain.contact_force_N[v].norm();
+    total_damped_N += damped.contact_force_N[v].norm();
+    largest_shift_m =
+        std::max(largest_shift_m, (plain.positions_m[v] - damped.positions_m[v]).norm());
+  }
+  // The same bounds as the normal damper's test above: two states within the stop rule of one
+  // equilibrium.
+  EXPECT_NEAR(total_damped_N / total_plain_N, 1.0, 1.4e-4);
+  EXPECT_LT(largest_shift_m, 1e-5);
+  std::printf("frames: plain %d, stick damper zeta 1: %d; total contact force %.9g / %.9g N\n",
+              plain_report.iterations, damped_report.iterations, total_plain_N, total_damped_N);
+}
+
 }  // namespace
 }  // namespace tightfit
