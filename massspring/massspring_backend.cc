@@ -80,6 +80,12 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
       contact_damper_N_s_per_m_.push_back(contact_damper_N_s_per_m(
           parameters_.contact_normal_damping_ratio,
           problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i], mass_kg_[i]));
+  stick_normal_.assign(n, Vec3::Zero());
+  if (parameters_.contact_stick_damping_ratio > 0 && friction_.active() && problem_.body)
+    for (int i = 0; i < n; ++i)
+      stick_damper_N_s_per_m_.push_back(
+          contact_damper_N_s_per_m(parameters_.contact_stick_damping_ratio,
+                                   friction_.tangential_stiffness_N_per_m(i), mass_kg_[i]));
   if (parameters_.placement == Placement::flat_panels)
     flat_start_ = std::make_unique<FlatPanelStart>(problem_, parameters_);
 }
@@ -121,6 +127,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   // changes no faster than the point moves). Half of that margin is used: a smooth contact
   // surface's field (docs/bodies.md) is a distance only to within its blending.
   damper_direction_[i] = Vec3::Zero();
+  stick_normal_[i] = Vec3::Zero();
   if ((x - asked_at_m_[i]).norm() < 0.5 * (clearance_m_[i] - multiplier_N_[i] / penalty_N_per_m))
     return Vec3::Zero();
   // Without friction the force needs the gap and the normals alone (RigidBody::query_parts).
@@ -138,6 +145,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
         friction_.response(int(i), *problem_.body, x, s, lambda_N, Vec3::Zero(), &near_[i]);
     f += r.force_N;
     if (slipping) *slipping = r.slipping;
+    if (!r.slipping && !stick_damper_N_s_per_m_.empty()) stick_normal_[i] = s.outward_normal;
   }
   return f;
 }
@@ -234,6 +242,13 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
 
 void MassSpringBackend::add_contact_damping(const std::vector<Vec3>& v,
                                             std::vector<Vec3>& force) const {
+  // A sticking vertex's friction spring, across the normal (massspring_parameters.h).
+  for (std::size_t i = 0; i < stick_damper_N_s_per_m_.size(); ++i) {
+    const Vec3& n = stick_normal_[i];
+    if (n == Vec3::Zero()) continue;
+    force[i] -= stick_damper_N_s_per_m_[i] * (v[i] - n.dot(v[i]) * n);
+    if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
+  }
   for (std::size_t i = 0; i < contact_damper_N_s_per_m_.size(); ++i) {
     const Vec3& n = damper_direction_[i];
     if (n == Vec3::Zero()) continue;
@@ -284,7 +299,9 @@ double MassSpringBackend::choose_time_step_s() const {
   // above about a half of the stiffest vertex's, where the contact spring sets the step).
   return std::min(
       stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety),
-      damper_time_step_s(contact_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety));
+      std::min(
+          damper_time_step_s(contact_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety),
+          damper_time_step_s(stick_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety)));
 }
 
 double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in_contact) {

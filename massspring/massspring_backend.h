@@ -171,6 +171,10 @@ class MassSpringBackend final : public Backend {
   // does), while one along grad g damps the mode the spring kA acts on and leaves the rest.
   mutable std::vector<Vec3> damper_direction_;
   std::vector<double> contact_damper_N_s_per_m_;
+  // The sticking vertices' friction dampers (Contact stick damping ratio), and the normal each
+  // acts across, set by contact_force_N (zero: not sticking).
+  std::vector<double> stick_damper_N_s_per_m_;
+  mutable std::vector<Vec3> stick_normal_;
   // Adds each in-contact particle's damper -c (v . d) d to `force`, d = grad g.
   void add_contact_damping(const std::vector<Vec3>& v, std::vector<Vec3>& force) const;
 };

@@ -3,9 +3,25 @@
 #include "massspring/massspring_backend.h"
 #include "massspring/massspring_parameters.h"
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace tightfit {
+
+namespace {
+// Whether the case dresses its garment from afar round the body's limbs (a handler without a
+// Placement subsection, as a test's, does not).
+bool dressed_round_limbs(const dealii::ParameterHandler& prm) {
+  try {
+    return prm.get(std::vector<std::string>{"Placement"}, "Kind") == "pattern arrangement";
+  } catch (...) {
+    return false;
+  }
+}
+}  // namespace
 
 BackendEntry massspring_backend_entry() {
   BackendEntry entry;
@@ -22,7 +38,7 @@ BackendEntry massspring_backend_entry() {
   entry.create = [](const Problem& problem, const StopRule& stop,
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
     MassSpringParameters parameters;
-    parameters.parse_parameters(prm, stop.faceted_body);
+    parameters.parse_parameters(prm, stop.faceted_body, dressed_round_limbs(prm));
     parameters.stop = stop;
     parameters.validate();
     return std::make_unique<MassSpringBackend>(problem, parameters);

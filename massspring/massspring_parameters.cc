@@ -104,6 +104,16 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "vertices on a faceted body, not a slide along "
                     "it; the stop rule's residual leaves it out. 0 = off. RK4 only." +
                         auto_note(f.contact_normal_damping_ratio, d.contact_normal_damping_ratio));
+  prm.declare_entry("Contact stick damping ratio", "auto", Anything(),
+                    "Damping ratio zeta of each sticking vertex's friction spring across the "
+                    "body's normal, dimensionless in [0, 1]: a vertex in contact whose friction "
+                    "sticks gets -2 zeta sqrt(kt m) (v - (v . n) n) (kt its tangential penalty "
+                    "stiffness in N/m, m its mass in kg, n the body's outward normal). Damps a "
+                    "stuck vertex ringing on its friction spring in a crease between two body "
+                    "parts (docs/cookbook-jumpsuit.md), not a slipping vertex; the stop rule's "
+                    "residual leaves it out. 0 = off. RK4 only. auto: 0.5 on a body mesh with "
+                    "Body/Mesh/Contact surface = faceted for a garment dressed round the limbs "
+                    "(Placement/Kind = pattern arrangement), 0 elsewhere.");
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
                     "zero every frame) before damped RK4 takes over; the start also ends when "
@@ -165,7 +175,8 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool faceted_body) {
+void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool faceted_body,
+                                            bool dressed_round_limbs) {
   const MassSpringParameters d = faceted_body ? on_faceted_body() : MassSpringParameters{};
   prm.enter_subsection("Mass spring");
   integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
@@ -178,6 +189,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   damping_per_s = prm.get_double("Damping");
   slide_damping_per_s = prm.get_double("Slide damping");
   const std::string contact_damping_text = prm.get("Contact normal damping ratio");
+  const std::string stick_damping_text = prm.get("Contact stick damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
   const std::string net_force_text = prm.get("Net force tolerance");
   maximum_frames = prm.get_integer("Maximum frames");
@@ -195,6 +207,8 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
                   "Time step update frames");
   contact_normal_damping_ratio =
       auto_or(contact_damping_text, "Contact normal damping ratio", d.contact_normal_damping_ratio);
+  contact_stick_damping_ratio = auto_or(stick_damping_text, "Contact stick damping ratio",
+                                        faceted_body && dressed_round_limbs ? 0.5 : 0.0);
   net_force_tolerance = auto_or(net_force_text, "Net force tolerance", d.net_force_tolerance);
   validate();
 }

@@ -70,6 +70,15 @@ struct MassSpringParameters {
   // slide over the body; the force is left out of the residual the stop rule reads (as the
   // damping above is). 0: off.
   double contact_normal_damping_ratio = 0.0;
+  // Damping ratio of each sticking vertex's friction spring across the body's normal,
+  // dimensionless in [0, 1]: a vertex in contact whose friction sticks (its tangential offset
+  // from its anchor within the Coulomb cone) gets -2 zeta sqrt(kt m) (v - (v . n) n), kt its
+  // tangential penalty stiffness. That spring is as stiff as the contact spring and the mass
+  // damping is a hundredth of its critical damping: a stuck vertex in a crease between two
+  // body parts (an armpit, the crotch) rings on it for thousands of frames and holds the rms
+  // residual above the stop rule (docs/cookbook-jumpsuit.md). A slipping vertex is not damped,
+  // so neither is a slide; the force is left out of the residual. 0: off.
+  double contact_stick_damping_ratio = 0.0;
   // Frames of the paper's quasi-static start (velocity reset to zero every frame) before the
   // damped RK4 integration takes over.
   int quasi_static_frames = 30;
@@ -123,7 +132,10 @@ struct MassSpringParameters {
   // Reads the "Mass spring" subsection (not `stop`: the caller sets it from the Solver one);
   // the entries at auto take on_faceted_body()'s values when `faceted_body`, the ones above
   // otherwise.
-  void parse_parameters(dealii::ParameterHandler& prm, bool faceted_body = false);
+  // `dressed_round_limbs`: the garment is dressed from afar round the body's limbs
+  // (Placement/Kind = pattern arrangement), where the auto stick damping is on.
+  void parse_parameters(dealii::ParameterHandler& prm, bool faceted_body = false,
+                        bool dressed_round_limbs = false);
 };
 
 }  // namespace tightfit

@@ -22,6 +22,8 @@ void MassSpringParameters::validate() const {
   // omega (zeta + sqrt(zeta^2 - 1)) and RK4 could leave its stability region.
   require(contact_normal_damping_ratio >= 0 && contact_normal_damping_ratio <= 1,
           "Contact normal damping ratio", "must be in [0, 1] (1 = critical)");
+  require(contact_stick_damping_ratio >= 0 && contact_stick_damping_ratio <= 1,
+          "Contact stick damping ratio", "must be in [0, 1] (1 = critical)");
   require(time_step_update_frames >= 0, "Time step update frames",
           "must be >= 0 (0 = once a step)");
   require(quasi_static_frames >= 0, "Quasi-static frames", "must be >= 0");

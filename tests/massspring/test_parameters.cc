@@ -153,6 +153,31 @@ TEST(MassSpringParameters, ContactNormalDampingRatioIsReadAndKeptWithinCritical)
   expect_refused_naming(p, "Contact normal damping ratio");
 }
 
+// The stick damper at auto: on (0.5) only for a garment dressed round the limbs on a faceted
+// body mesh, off on a faceted body otherwise (the tops) and elsewhere; a number given wins;
+// a ratio above critical or below zero is refused naming the entry.
+TEST(MassSpringParameters, ContactStickDampingIsOnAtAutoOnlyRoundLimbsOnAFacetedBody) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  MassSpringParameters p;
+  p.parse_parameters(prm, true, true);
+  EXPECT_EQ(p.contact_stick_damping_ratio, 0.5);
+  for (const auto& [faceted, round_limbs] :
+       {std::pair{true, false}, {false, true}, {false, false}}) {
+    p.parse_parameters(prm, faceted, round_limbs);
+    EXPECT_EQ(p.contact_stick_damping_ratio, 0.0) << faceted << round_limbs;
+  }
+  EXPECT_EQ(MassSpringParameters{}.contact_stick_damping_ratio, 0.0);
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Contact stick damping ratio = 0.2\nend\n");
+  p.parse_parameters(prm, false, false);
+  EXPECT_DOUBLE_EQ(p.contact_stick_damping_ratio, 0.2);
+  for (double bad : {1.5, -0.1}) {
+    p.contact_stick_damping_ratio = bad;
+    expect_refused_naming(p, "Contact stick damping ratio");
+  }
+}
+
 TEST(MassSpringParameters, SlideDampingIsReadAndNeedsANetForceTolerance) {
   dealii::ParameterHandler prm;
   MassSpringParameters::declare_parameters(prm);
