@@ -166,8 +166,11 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   NewtonReport& newton = report.newton;
   newton.linear_solver = to_string(newton_.linear_solver().kind());
   newton.krylov_iterations = log.krylov_iterations;
-  newton.linear_solver_notes = log.notes;
   newton.linear_solver_switched = !log.notes.empty();
+  // The globalization's switch shares the log line's bracket (core/step_report.cc).
+  newton.linear_solver_notes = log.notes +
+                               (!log.notes.empty() && !log.globalization.empty() ? "; " : "") +
+                               log.globalization;
   newton.n_shifted_solves = log.n_shifted_solves;
   newton.n_set_predictions = log.n_set_predictions;
   newton.n_failed_line_searches = log.n_failed_line_searches;

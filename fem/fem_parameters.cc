@@ -116,7 +116,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "potential, less the weight's work) while the residual is well above the "
                     "potential's defect on a mesh body, a step uphill in it or cut below an "
                     "eighth grows the tangent's shift, and a step the line search cut is "
-                    "followed by one solve on the contact set it predicts; residual: the "
+                    "followed by one solve on the contact set it predicts; where that defect is "
+                    "also above the shared stop rule (Solver/Relative tolerance times the "
+                    "tension scale), the residual norm alone judges the rest of the load step, "
+                    "a first solve starting again from the step's start. residual: the "
                     "residual norm alone decides, with no prediction after a cut step.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");

@@ -52,6 +52,9 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
       stiffness_scale_N_per_m_(stiffness_scale_N_per_m),
       tolerance_N_(stop_threshold_N(parameters, stiffness_scale_N_per_m * pattern.mean_edge_m,
                                     tension_scale_N)),
+      shared_tolerance_N_(parameters.stop.relative_tolerance > 0.0
+                              ? parameters.stop.relative_tolerance * tension_scale_N
+                              : tolerance_N_),
       body_(body),
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
@@ -168,9 +171,13 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
   // The potential judges the first solve of a load step, where the garment travels onto the
   // body; the later rounds start next to the solution, where on a mesh body its minimum is not
   // R = 0 (see kDefectRatio).
-  bool potential_judges =
-      parameters_.line_search && parameters_.potential_globalization && energy_ && first_solve_;
+  const bool potential_on =
+      parameters_.line_search && parameters_.potential_globalization && energy_;
+  bool potential_judges = potential_on && first_solve_ && potential_trusted_;
   first_solve_ = false;
+  // Where the load step's first solve starts: it starts again from here, judged by ||R||_2,
+  // should the potential turn out unable to finish the step (below).
+  const DofVector x_start = potential_judges ? x : DofVector();
   for (int iteration = 0;; ++iteration) {
     const double residual_N = scaled_residual_N(system);
     history_N.push_back(residual_N);
@@ -202,11 +209,48 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
            "Newton's method did not converge in " + std::to_string(iteration) + " iterations",
            residual_N, failure_details(system, x, log));
     const double norm_0 = system.rhs.l2_norm();
-    // The potential at x and its defect, read once per iteration while the potential judges
-    // (see the line search below).
-    double energy_0_J = std::numeric_limits<double>::quiet_NaN();
-    bool energy_0_read = false;
-    double defect_0_N = 0.0;
+    // The potential's defect against ||R||_2, measured every iteration while the potential is
+    // trusted (docs/backends.md, "Newton's line search"). The potential's minimum lies within
+    // about its defect of R = 0 (on a mesh body the contact force's normal is not the gap's
+    // gradient: potential_defect_N), so once ||R||_2 is down to kDefectRatio times the defect
+    // the potential no longer judges strictly. Where that defect is also above the shared stop
+    // rule (the strain error both backends accept; the tubes on smooth mesh cylinders stay
+    // below it and converge quadratically under the potential), the potential's minimum may
+    // not meet the rule at all, and its steps (taken where ||R||
+    // refused them) led the stocking's tube towards that minimum, away from R = 0, for
+    // minutes: ||R||_2 alone judges the rest of the load step, as 'Globalization = residual'
+    // does, and a first solve starts again from where it started (its potential-led path
+    // ended where ||R|| alone crept for hundreds of iterations). On the analytic bodies the
+    // defect is zero and the potential stays trusted.
+    if (potential_on && potential_trusted_) {
+      const double defect_N = defect_ ? defect_(x) : 0.0;
+      if (norm_0 <= kDefectRatio * defect_N) {
+        potential_judges = false;
+        if (defect_N > shared_tolerance_N_) {
+          potential_trusted_ = false;
+          std::ostringstream note;
+          note.precision(3);
+          note << "the potential's defect " << defect_N << " N against ||R||_2 " << norm_0
+               << " N at iteration " << iteration << ": ||R|| alone judges";
+          if (x_start.size() > 0 && iteration > 0) {
+            note << ", from the step's start";
+            x = x_start;
+            shift_N_per_m_ = 0.0;
+            step_cut_ = false;
+            slow_iterations = 0;
+            assemble(x, true);
+            log.globalization += note.str();
+            log.step_length.push_back(0.0);
+            continue;
+          }
+          log.globalization += note.str();
+        }
+      }
+    }
+    if (!potential_trusted_) potential_judges = false;
+    // The potential at x, read once per iteration while it judges (the line search below).
+    const double energy_0_J =
+        potential_judges ? energy_(x) : std::numeric_limits<double>::quiet_NaN();
     // The potential at x where it only takes the steps ||R|| refuses, read when first needed.
     double energy_x_J = std::numeric_limits<double>::quiet_NaN();
     bool energy_x_read = false;
@@ -227,7 +271,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // it), and re-solving on the set the step reaches is what lets the next step be taken
     // whole (docs/backends.md, "Newton's line search").
     const int prediction_rounds =
-        step_cut_ && parameters_.potential_globalization
+        step_cut_ && parameters_.potential_globalization && potential_trusted_
             ? std::max(parameters_.max_contact_set_predictions, kPredictionRoundsAfterCut)
             : parameters_.max_contact_set_predictions;
     bool predict = predictor_ && prediction_rounds > 0, predicted = false, reassemble = false;
@@ -287,16 +331,10 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       // The potential judges only where R is its gradient to within a tenth (kDefectRatio):
       // closer to the solution on a mesh body, where the contact force's normal is not the
       // distance's gradient, its minimum is not R = 0 and ||R|| alone decides.
-      if (potential_judges && !energy_0_read) {
-        energy_0_read = true;
-        defect_0_N = defect_ ? defect_(x) : 0.0;
-        if (norm_0 > kDefectRatio * defect_0_N) energy_0_J = energy_(x);
-      }
-      // Elsewhere (the later rounds, a stalled potential, a mesh body near the solution) ||R||
-      // decides, and the potential only takes a step ||R|| refused.
+      // Elsewhere (the later rounds, a stalled potential) ||R|| decides, and the potential
+      // only takes a step ||R|| refused, while it is trusted.
       const bool strict = std::isfinite(energy_0_J);
-      const bool lenient =
-          !strict && parameters_.line_search && parameters_.potential_globalization && energy_;
+      const bool lenient = !strict && potential_on && potential_trusted_;
       const double slope_J = strict || lenient ? -owned_dot(system, increment)
                                                : std::numeric_limits<double>::quiet_NaN();
       // The potential's round-off: a sum of many terms of one sign, each exact to a few ulps.

@@ -31,6 +31,7 @@ struct NewtonLog {
   std::vector<double> step_length;     // per iteration, the fraction of Newton's step taken
   std::vector<int> krylov_iterations;  // per linear solve (0 for the direct solver)
   std::string notes;                   // linear solver switches
+  std::string globalization;           // where the potential stopped judging, and why
   int n_shifted_solves = 0;            // tangents shifted after failed line searches
   int n_set_predictions = 0;           // systems solved again on a predicted contact set
   int n_failed_line_searches = 0;      // iterations whose every shift failed the line search
@@ -59,11 +60,15 @@ class NewtonSolver {
                MPI_Comm comm);
 
   double tolerance_N() const { return tolerance_N_; }
+  // The shared stop rule's force, Solver/Relative tolerance times the tension scale, N (the
+  // FE backend's own rule when that is off): the residual both backends accept.
+  double shared_tolerance_N() const { return shared_tolerance_N_; }
   // Forgets the tangent's shift of earlier steps (call at the start of a load step).
   void start_step() {
     shift_N_per_m_ = 0.0;
     step_cut_ = false;
     first_solve_ = true;
+    potential_trusted_ = true;
   }
   // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
   void pattern_changed() { linear_solver_->reset(); }
@@ -109,6 +114,7 @@ class NewtonSolver {
   FemParameters parameters_;
   double stiffness_scale_N_per_m_;
   double tolerance_N_;
+  double shared_tolerance_N_;
   const RigidBody* body_;
   MPI_Comm comm_;
   std::unique_ptr<PetscLinearSolver> linear_solver_;
@@ -126,6 +132,10 @@ class NewtonSolver {
   bool step_cut_ = false;
   // No solve() yet since start_step().
   bool first_solve_ = true;
+  // The potential may judge steps in this load step: false from the first iteration where
+  // ||R||_2 fell to kDefectRatio times its defect (see solve()); the rest of the step is then
+  // judged as 'Globalization = residual' judges it.
+  bool potential_trusted_ = true;
   // Prediction rounds of a step after a cut one: 1 took the tubes on mesh bodies through in
   // 11 to 23 iterations where the contact set at x took them nowhere (docs/performance.md).
   static constexpr int kPredictionRoundsAfterCut = 1;
