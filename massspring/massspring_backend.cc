@@ -572,8 +572,10 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   // Inexact rounds: only a settle an update follows may stop early. The rounds settle once more
   // without an update after an update that finds the gap closed (core/load_step.h), and that
   // settle, or the plain penalty's only one, meets the stop rule.
-  const bool inexact = rounds.max_updates > 0 && rounds.settle_after_last_update &&
-                       parameters_.inexact_round_fraction > 0 &&
+  // On a body whose queries are costly only (a mesh body, where a frame costs most): the
+  // analytic bodies' rounds, cheap already, keep their states to the last digit.
+  const bool inexact = rounds.max_updates > 0 && rounds.settle_after_last_update && problem_.body &&
+                       problem_.body->costly_queries() && parameters_.inexact_round_fraction > 0 &&
                        parameters_.integrator == Integrator::rk4;
   final_settle_next_ = !inexact;
   rounds.read_gap = [&](bool update, int* count) {
