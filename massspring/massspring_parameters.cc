@@ -147,8 +147,8 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "rule if that is larger. The settle after the last update always meets the "
                     "stop rule, so the stable state meets the same rule; settling the earlier "
                     "rounds below what their update changes only spends frames. Read on mesh "
-                    "bodies only (an analytic body's rounds are cheap). 0 = every settle meets "
-                    "the stop rule.");
+                    "bodies without friction under the largest-residual stop rule only. 0 = "
+                    "every settle meets the stop rule.");
   prm.declare_entry("Bending rigidity", text(d.bending_rigidity_N_m), Double(0.0, 1.0),
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
                     "Angular springs on interior edges, hinge stiffness 3 B |e|^2 / (A1 + A2) "

@@ -102,8 +102,10 @@ struct MassSpringParameters {
   // meets the stop rule. Settling far below the force the next update moves each vertex by
   // only spends frames (inexact Uzawa: the update's error is of the order of the residual, so
   // a fraction of the update keeps its contraction). On a body whose queries are costly (a mesh
-  // body, RigidBody::costly_queries) only: an analytic body's rounds are cheap, and its states
-  // stay those of every round meeting the stop rule. 0: every settle meets the stop rule.
+  // body, RigidBody::costly_queries), without friction and with the largest-residual stop rule
+  // only: an analytic body's rounds are cheap, and a dressed top's rms residual lies far below
+  // the update's largest change (its rounds then stopped within frames and the gap did not
+  // close). 0: every settle meets the stop rule.
   double inexact_round_fraction = 0.02;
   // Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m).
   double bending_rigidity_N_m = 1e-6;
