@@ -137,8 +137,39 @@ void BlendedQuadricField::build_grid() {
     for_each_cell_of(i, [&](int cell) { cell_vertices_[fill[cell]++] = i; });
 }
 
+void BlendedQuadricField::vertices_near(const Vec3& x, double radius_m,
+                                        std::vector<int>& vertices) const {
+  vertices.clear();
+  if (cells_[0] == 0) return;
+  // The cells the ball's box meets hold every vertex whose support reaches into the ball.
+  const Vec3 relative = (x - grid_origin_m_) / cell_m_;
+  const double r_cells = radius_m / cell_m_;
+  std::array<int, 3> first, last;
+  for (int k = 0; k < 3; ++k) {
+    const double low = std::floor(relative[k] - r_cells), high = std::floor(relative[k] + r_cells);
+    if (!(high >= 0.0 && low < cells_[k])) return;  // the ball misses the grid (or x is NaN)
+    first[k] = static_cast<int>(std::max(0.0, low));
+    last[k] = static_cast<int>(std::min(double(cells_[k] - 1), high));
+  }
+  for (int c = first[2]; c <= last[2]; ++c)
+    for (int b = first[1]; b <= last[1]; ++b)
+      for (int a = first[0]; a <= last[0]; ++a) {
+        const int cell = a + cells_[0] * (b + cells_[1] * c);
+        for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+          const int i = cell_vertices_[k];
+          // Within s_i (1 + 1e-9) + radius of x, as the scan's test below (its margin, and a
+          // nanometre for round-off).
+          const double reach = std::sqrt(reach_[i].beyond_squared_m2) + radius_m + 1e-9;
+          if ((x - reach_[i].centre_m).squaredNorm() <= reach * reach) vertices.push_back(i);
+        }
+      }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+}
+
 BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m,
-                                                         const Mat3& dm_dx) const {
+                                                         const Mat3& dm_dx,
+                                                         const std::vector<int>* candidates) const {
   thread_local std::vector<Term> terms_storage;
   thread_local std::vector<Mat3> turned_storage;
   std::vector<Term>& terms = terms_storage;
@@ -154,9 +185,11 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   }
   const int cell = at[0] + cells_[0] * (at[1] + cells_[1] * at[2]);
   const Reach* const reach = reach_.data();
-  const int* const listed = cell_vertices_.data();
-  for (int c = cell_start_[cell], end = cell_start_[cell + 1]; c < end; ++c) {
-    const int i = listed[c];
+  const int* listed = cell_vertices_.data() + cell_start_[cell];
+  const int* listed_end = cell_vertices_.data() + cell_start_[cell + 1];
+  if (candidates) listed = candidates->data(), listed_end = listed + candidates->size();
+  for (; listed != listed_end; ++listed) {
+    const int i = *listed;
     const Vec3 delta = x - reach[i].centre_m;
     // Most vertices of the cell's list lie beyond their support of x: their squared distance
     // tells so without the root and the division (a margin of 1e-9 keeps the test below exact).

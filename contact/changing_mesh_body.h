@@ -21,6 +21,7 @@ class ChangingMeshBody : public Interface {
   SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override {
     return mesh_.query_parts(x, near, parts);
   }
+  bool costly_queries() const override { return true; }
   DisplayMesh display_mesh() const override { return mesh_.display_mesh(); }
   Vec3 surface_point_m(const SurfaceLocation& l) const override { return mesh_.surface_point_m(l); }
   Vec3 surface_point_near_m(const SurfaceLocation& l, const NearFaces* near) const override {

@@ -132,6 +132,8 @@ SurfacePoint MeshBody::query_parts(const Vec3& x, NearFaces& near, QueryParts pa
   near.reach_m = near_reach_m_;
   near.shape = shape_id_;
   bvh_.within(x, (x - hit.point_m).norm() + 2.0 * near_reach_m_ + 1e-9, near.faces);
+  if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth)
+    field_.vertices_near(x, near_reach_m_, near.blend_vertices);
   return finished(x, faceted_answer(x, hit), parts, &near);
 }
 
@@ -234,7 +236,7 @@ Vec3 MeshBody::surface_point_near_m(const SurfaceLocation& location, const NearF
   double t = 0.0;
   for (int iteration = 0; iteration < 8; ++iteration) {
     SurfacePoint s = faceted_near(flat + t * normal, near);
-    smooth_field(flat + t * normal, s);
+    smooth_field(flat + t * normal, s, near);
     const double residual = s.signed_distance_m - skin_offset_m_;
     const double slope = s.gap_gradient.dot(normal);
     if (!(slope > 0.1)) break;  // the normal field runs nearly along the surface: stop there

@@ -55,6 +55,7 @@ class MeshBody final : public RigidBody {
   // without its closest point's further Newton steps when `parts.closest_point` is off (the
   // faceted answer's closest point and location, and every dn/dx, come with the rest).
   SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override;
+  bool costly_queries() const override { return true; }
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override {
     return surface_point_near_m(location, nullptr);
@@ -94,8 +95,9 @@ class MeshBody final : public RigidBody {
   void smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point = true,
                     const NearFaces* near = nullptr) const;
   // smooth_query's distance, normal and derivatives alone, with the closest point one Newton
-  // step x - g n onto the surface.
-  void smooth_field(const Vec3& x, SurfacePoint& s) const;
+  // step x - g n onto the surface; the blend takes `near`'s vertices where x lies within their
+  // reach (the same value as the field's grid gives).
+  void smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* near = nullptr) const;
   // The face and barycentric coordinates b of the point y = c(b) + t N(b), c the flat point
   // and N = sum b_i n_i the interpolated vertex normal: the flat surface's coordinates carried
   // out to the smooth one along the normal field, a map that is continuous across edges

@@ -22,7 +22,7 @@ constexpr double faceted_below_weight = 0.05, smooth_above_weight = 0.25;
 
 void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
                             const NearFaces* near) const {
-  smooth_field(x, s);
+  smooth_field(x, s, near);
   const double gap = s.signed_distance_m - skin_offset_m_;
   // Newton's steps y <- y - (g(y) - t) n(y) onto the skin's level set g = t: the first is off
   // it by about gap^2 |n^T H n| / 2, the field not being a distance along its normal exactly,
@@ -31,16 +31,22 @@ void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
   Vec3 y = x - gap * s.outward_normal;
   for (int step = 0; closest_point && step < 2 && std::abs(gap) > 1e-7; ++step) {
     SurfacePoint at = faceted_near(y, near);
-    smooth_field(y, at);
+    smooth_field(y, at, near);
     y -= (at.signed_distance_m - skin_offset_m_) * at.outward_normal;
   }
   s.closest_point_m = y;
 }
 
-void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s) const {
+void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* near) const {
+  // The blend's vertices kept for x's neighbourhood, where x lies in it (query_parts keeps them
+  // with the near faces).
+  const std::vector<int>* candidates =
+      near && near->shape == shape_id_ && (x - near->centre_m).norm() <= near->reach_m
+          ? &near->blend_vertices
+          : nullptr;
   // The faceted answer's normal and derivative are the interpolated field's at the flat foot.
   const BlendedQuadricField::Value f =
-      field_.evaluate(x, s.outward_normal, s.normal_derivative_per_m);
+      field_.evaluate(x, s.outward_normal, s.normal_derivative_per_m, candidates);
   const double u =
       (f.weight_sum - faceted_below_weight) / (smooth_above_weight - faceted_below_weight);
   if (u <= 0.0) return;

@@ -43,6 +43,9 @@ struct NearFaces {
   double reach_m = -1.0;    // negative: nothing kept yet
   std::uint64_t shape = 0;  // the body's shape the faces were found on (MeshBody::shape_id)
   std::vector<int> faces;
+  // A mesh body's smooth surface: the vertices whose quadrics can blend at any x within
+  // `reach_m` of `centre_m` (BlendedQuadricField::vertices_near), ascending.
+  std::vector<int> blend_vertices;
 };
 
 // The parts of a SurfacePoint a caller needs beyond the signed distance, outward normal and
@@ -76,6 +79,10 @@ class RigidBody {
     (void)parts;
     return query_near(x, near);
   }
+  // Whether a query costs far more than a garment vertex's membrane and bending forces (a mesh
+  // body: a tree search and the smooth field's blend), so that a solver may query once per
+  // frame and carry the answer over the frame's later stages to first order.
+  virtual bool costly_queries() const { return false; }
   virtual DisplayMesh display_mesh() const = 0;
   // Where a SurfaceLocation found by query() is now: after the body grew or morphed it is the
   // same point of the body's surface, carried with it.

@@ -32,6 +32,7 @@ class ScaledBody final : public ShrinkingBody {
   // The body's own query_near at the point mapped back: `near` is kept in the body's own frame.
   SurfacePoint query_near(const Vec3& x, NearFaces& near) const override;
   SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override;
+  bool costly_queries() const override { return body_.costly_queries(); }
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override;
 

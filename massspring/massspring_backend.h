@@ -62,9 +62,10 @@ class MassSpringBackend final : public Backend {
   // removed) into `force`; returns the size the stop rule reads (Stop norm: the largest
   // magnitude or the root mean square), N (NaN when one is not finite). With a Net force
   // tolerance, the net force's share of it: max(norm, |sum f| x tolerance / net limit), so
-  // one comparison with the tolerance asks both.
-  double residual_forces(const std::vector<Vec3>& x, bool gravity_on,
-                         std::vector<Vec3>& force) const;
+  // one comparison with the tolerance asks both. `carried`: a later stage of an RK4 frame
+  // (contact_force_N).
+  double residual_forces(const std::vector<Vec3>& x, bool gravity_on, std::vector<Vec3>& force,
+                         bool carried = false) const;
   // The net force on the garment (the sum of `force`), N, and the limit the stop rule puts on
   // its size (Net force tolerance times the garment's weight; 0 when off), N.
   static Vec3 net_force_N(const std::vector<Vec3>& force);
@@ -93,7 +94,10 @@ class MassSpringBackend final : public Backend {
   // The contact force on particle i at x: the normal force lambda n and, with friction, the
   // return mapping's tangential force from the step's anchors. `slipping` (if given) is set
   // when the vertex slips.
-  Vec3 contact_force_N(std::size_t i, const Vec3& x, bool* slipping = nullptr) const;
+  // `carried`: a later stage of an RK4 frame, which may take the gap and normal carried over
+  // from the frame's first stage (carried_contact_, below) instead of a query.
+  Vec3 contact_force_N(std::size_t i, const Vec3& x, bool* slipping = nullptr,
+                       bool carried = false) const;
   // Keeps the friction anchors of the accepted state x_; returns how many vertices slip there.
   int commit_friction_anchors();
 
@@ -175,6 +179,29 @@ class MassSpringBackend final : public Backend {
   // acts across, set by contact_force_N (zero: not sticking).
   std::vector<double> stick_damper_N_s_per_m_;
   mutable std::vector<Vec3> stick_normal_;
+  // On a body whose queries are costly (RigidBody::costly_queries) and without friction, each
+  // RK4 frame queries the body at its first stage only; the later stages take the gap and
+  // normal to first order from that answer, g = g0 + grad g0 . (x - x0) and n = (n0 + dn/dx
+  // (x - x0)) / |...|. The stop rule reads the first stage's residual, from the exact query,
+  // so the stable state is the same; only the path to it changes, by the second-order terms of
+  // a frame's displacement (micrometres against the body's centimetres of curvature radius).
+  bool carry_contact_ = false;
+  struct CarriedContact {
+    bool valid = false;  // queried at this frame's first stage
+    Vec3 x0_m, gap_gradient, normal;
+    double gap_m = 0.0;
+    Mat3 normal_derivative_per_m;
+  };
+  mutable std::vector<CarriedContact> carried_contact_;
+  // Inexact contact rounds (MassSpringParameters::inexact_round_fraction): what Uzawa's update
+  // would change each particle's multiplier by at its last evaluation, N, and the largest over
+  // the particles at the last residual; and whether the next settle is the one after the last
+  // update (which meets the stop rule itself).
+  mutable std::vector<double> multiplier_change_N_;
+  mutable double largest_multiplier_change_N_ = 0.0;
+  bool final_settle_next_ = true;
+  // The residual below which the current settle stops, N.
+  double settle_tolerance_N() const;
   // Adds each in-contact particle's damper -c (v . d) d to `force`, d = grad g.
   void add_contact_damping(const std::vector<Vec3>& v, std::vector<Vec3>& force) const;
 };

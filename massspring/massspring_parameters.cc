@@ -150,6 +150,15 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "tolerance; the pressure then does not depend on Contact/Penalty factor, "
                     "as with the FE backend. A step that needs more updates fails. 0 = the "
                     "plain penalty: vertices settle p / k inside the body.");
+  prm.declare_entry("Inexact contact rounds", text(d.inexact_round_fraction), Double(0.0, 1.0),
+                    "Dimensionless: a settle that a contact multiplier update will follow stops "
+                    "once its residual force is below this times the largest change that update "
+                    "would make to a vertex's multiplier (kA |g| in contact), or below the stop "
+                    "rule if that is larger. The settle after the last update always meets the "
+                    "stop rule, so the stable state meets the same rule; settling the earlier "
+                    "rounds below what their update changes only spends frames. Read on mesh "
+                    "bodies without friction under the largest-residual stop rule only. 0 = "
+                    "every settle meets the stop rule.");
   prm.declare_entry("Bending rigidity", text(d.bending_rigidity_N_m), Double(0.0, 1.0),
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
                     "Angular springs on interior edges, hinge stiffness 3 B |e|^2 / (A1 + A2) "
@@ -197,6 +206,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   stall_fall = prm.get_double("Stall residual fall");
   stall_halvings = prm.get_integer("Stall time step halvings");
   contact_updates = prm.get_integer("Contact multiplier updates");
+  inexact_round_fraction = prm.get_double("Inexact contact rounds");
   bending_rigidity_N_m = prm.get_double("Bending rigidity");
   placement = prm.get("Placement") == "flat panels" ? Placement::flat_panels : Placement::sewn_tube;
   placement_gap_m = prm.get_double("Placement gap");

@@ -104,6 +104,18 @@ struct MassSpringParameters {
   // multiplier becomes its contact force and the garment settles again, until the largest
   // penetration is below stop.gap_tolerance_m. 0 = the plain penalty (vertices sit p / k inside).
   int contact_updates = 10;
+  // Inexact contact rounds, dimensionless, >= 0: a settle that a multiplier update will follow
+  // stops once its residual is below this times the largest change that update would make to
+  // a vertex's multiplier at the current state (kA |g| in contact), or below the stop rule,
+  // whichever is larger; the settle after the last update, whose state is the result, always
+  // meets the stop rule. Settling far below the force the next update moves each vertex by
+  // only spends frames (inexact Uzawa: the update's error is of the order of the residual, so
+  // a fraction of the update keeps its contraction). On a body whose queries are costly (a mesh
+  // body, RigidBody::costly_queries), without friction and with the largest-residual stop rule
+  // only: an analytic body's rounds are cheap, and a dressed top's rms residual lies far below
+  // the update's largest change (its rounds then stopped within frames and the gap did not
+  // close). 0: every settle meets the stop rule.
+  double inexact_round_fraction = 0.02;
   // Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m).
   double bending_rigidity_N_m = 1e-6;
   // Start of the first load step.

@@ -35,6 +35,7 @@ void MassSpringParameters::validate() const {
   require(stall_fall > 0 && stall_fall < 1, "Stall residual fall", "must be in (0, 1)");
   require(stall_halvings >= 0, "Stall time step halvings", "must be >= 0");
   require(contact_updates >= 0, "Contact multiplier updates", "must be >= 0 (0 = plain penalty)");
+  require(inexact_round_fraction >= 0, "Inexact contact rounds", "must be >= 0 (0 = off)");
   require(bending_rigidity_N_m >= 0, "Bending rigidity", "must be >= 0 (N m)");
   require(placement_gap_m >= 0, "Placement gap", "must be >= 0 (m)");
   require(seam_stiffness_factor > 0, "Seam spring stiffness factor", "must be positive");

@@ -75,7 +75,9 @@ TEST_P(TubeOnMeshCylinder, MeanPressureWithinTheFacetsChordError) {
                        GetParam());
   // Both surfaces settle as the cylinder does (the defaults elsewhere than on a faceted body
   // mesh, whose own, the rms at 3e-3, would loosen the stop rule beyond the facets' effect
-  // measured here): only the surface differs.
+  // measured here), and every contact round to the stop rule as an analytic body's rounds are
+  // (Inexact contact rounds moved this tube's smooth mean by 6.8e-5, within the stop rule but
+  // beyond the effect measured here): only the surface differs.
   auto on_prism = [&](const std::string& surface) {
     return mean_pressure_Pa(
         {"Body/Kind=mesh", "Body/Mesh/File=" + obj, "Body/Mesh/Up axis=+z",
@@ -84,7 +86,7 @@ TEST_P(TubeOnMeshCylinder, MeanPressureWithinTheFacetsChordError) {
          setting("Placement/Tube round axis/Radius", 1.005 * rho), "Protocol/Final alpha=1",
          "Solver/Relative tolerance=1e-4", "Solver/Stop norm=largest", "Solver/Gap tolerance=1e-8",
          "Mass spring/Contact normal damping ratio=0", "Mass spring/Time step update frames=0",
-         "Mass spring/Net force tolerance=0"},
+         "Mass spring/Net force tolerance=0", "Mass spring/Inexact contact rounds=0"},
         GetParam());
   };
   const double p_faceted = on_prism("faceted"), p_smooth = on_prism("smooth");
