@@ -122,7 +122,8 @@ void declare_garment(ParameterHandler& prm) {
   prm.declare_entry("Edge length warp", "0.022", Patterns::Double(1e-5),
                     "Target mesh spacing along the warp, along the tube (m).");
   prm.declare_entry("Mesh scale", "1", Patterns::Double(1e-3, 100),
-                    "Multiplies both edge lengths: 0.5 halves them (about four times the "
+                    "Multiplies both edge lengths and a pattern file's Mesh edge length: 0.5 "
+                    "halves them (about four times the "
                     "vertices). 0.62 gives the paper's fine '4 5T': 1444 vertices, 2736 "
                     "triangles (the paper: 1397 and 2738).");
 }
@@ -412,6 +413,14 @@ CaseParameters parse_case_parameters(ParameterHandler& prm, const std::string& c
   c.garment.mesh_scale = prm.get_double("Mesh scale");
   c.garment.spacing.along_x_m = prm.get_double("Edge length weft") * c.garment.mesh_scale;
   c.garment.spacing.along_y_m = prm.get_double("Edge length warp") * c.garment.mesh_scale;
+  if (c.garment.kind == "pattern file") {
+    // A pattern's own Mesh edge length is scaled too, so that a convergence study or a finer
+    // run by Mesh scale refines it (docs/command-line.md, "tightfit convergence").
+    prm.enter_subsection("Pattern file");
+    c.garment.spacing.pattern_edge_length_m =
+        prm.get_double("Mesh edge length") * c.garment.mesh_scale;
+    prm.leave_subsection();
+  }
   prm.leave_subsection();
 
   prm.enter_subsection("Material");

@@ -113,6 +113,7 @@ CaseParameters level_parameters(const CaseParameters& base, int level, double ra
   p.garment.mesh_scale *= factor;
   p.garment.spacing.along_x_m *= factor;  // Mesh scale was applied when the file was read
   p.garment.spacing.along_y_m *= factor;
+  p.garment.spacing.pattern_edge_length_m *= factor;  // a pattern's own edge length; 0 if none
   p.output.write_vtu = false;
   return p;
 }

@@ -40,8 +40,8 @@ PartEntry<GarmentMaker> pattern_file_garment_entry() {
                           "AAMA DXF (.dxf); a relative path is read from the working directory, "
                           "else from the case file's folder.");
     prm.declare_double("Mesh edge length", 0, 0, ParameterTree::unbounded,
-                       "Target triangle edge length of the Delaunay mesher (m); 0 takes "
-                       "Garment/Edge length weft (scaled by Garment/Mesh scale).");
+                       "Target triangle edge length of the Delaunay mesher (m), scaled by "
+                       "Garment/Mesh scale; 0 takes Garment/Edge length weft (scaled too).");
     prm.declare_double("Minimum angle", 25, 1, 33,
                        "No triangle angle below this (degrees; CGAL's mesher terminates up to "
                        "about 33).");
