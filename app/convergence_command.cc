@@ -65,10 +65,14 @@ int convergence_command(const CommandLine& cl, std::ostream& out) {
   settings.n_levels = cl.levels;
   settings.ratio = cl.refinement_ratio;
   settings.regions = cl.convergence_regions;
-  print_case_header(out, cl.case_files.front(), *make_scenario(parameters));
-  out << "  convergence: " << cl.levels << " levels, mesh scale " << parameters.garment.mesh_scale
-      << " divided by " << settings.ratio << " each level, on " << backends.size() << " backend"
-      << (backends.size() == 1 ? "" : "s") << " (no VTU output)\n";
+  // The header is level 0's: the case's own scenario (but for VTU output), made once for the
+  // study.
+  settings.on_levels_made = [&](const Scenario& level_0) {
+    print_case_header(out, cl.case_files.front(), level_0);
+    out << "  convergence: " << cl.levels << " levels, mesh scale " << parameters.garment.mesh_scale
+        << " divided by " << settings.ratio << " each level, on " << backends.size() << " backend"
+        << (backends.size() == 1 ? "" : "s") << " (no VTU output)\n";
+  };
 
   const ConvergenceStudy study = run_convergence_study(parameters, settings, backends, dir, out);
   out << "\n" << convergence_table(study, cl.levels, settings.ratio);

@@ -106,25 +106,20 @@ double relative(double value, double reference) {
   return has_closed_form(reference) ? (value - reference) / reference : not_defined;
 }
 
-// The case with its edge lengths divided by ratio^level and no VTU output.
-CaseParameters level_parameters(const CaseParameters& base, int level, double ratio) {
-  CaseParameters p = base;
-  const double factor = std::pow(ratio, -level);
-  p.garment.mesh_scale *= factor;
-  p.garment.spacing.along_x_m *= factor;  // Mesh scale was applied when the file was read
-  p.garment.spacing.along_y_m *= factor;
-  p.garment.spacing.pattern_edge_length_m *= factor;  // a pattern's own edge length; 0 if none
-  p.output.write_vtu = false;
-  return p;
-}
+// A level's scenario, made once for every backend's run, and the wall time making it took, s.
+struct MadeLevel {
+  std::unique_ptr<Scenario> scenario;
+  int n_vertices = 0;
+  double seconds = 0.0;
+};
 
 // Before a long study: the size of each level, so that a user sees what is coming.
-void print_level_sizes(std::ostream& log, const std::vector<int>& n_vertices,
-                       const std::vector<std::size_t>& n_triangles) {
+void print_level_sizes(std::ostream& log, const std::vector<MadeLevel>& levels) {
   log << "  levels:";
-  for (std::size_t k = 0; k < n_vertices.size(); ++k)
-    log << (k == 0 ? " " : "; ") << k << ": " << n_vertices[k] << " vertices, " << n_triangles[k]
-        << " triangles";
+  for (std::size_t k = 0; k < levels.size(); ++k)
+    log << (k == 0 ? " " : "; ") << k << ": " << levels[k].n_vertices << " vertices, "
+        << levels[k].scenario->mesh.triangles.size() << " triangles (made in "
+        << duration_text(levels[k].seconds) << ")";
   log << "\n  (each level's time, and an estimate of the next one's, is printed as the level "
          "ends)\n";
 }
@@ -160,12 +155,13 @@ struct StudyTables {
   std::vector<std::size_t> region_indices;
 };
 
-BackendConvergence run_backend_levels(const CaseParameters& parameters,
-                                      const ConvergenceSettings& settings,
+// Runs `backend` on the levels' scenarios, coarse to fine, until one fails. The last backend
+// to run a level releases its scenario (`release_levels`).
+BackendConvergence run_backend_levels(std::vector<MadeLevel>& levels,
                                       const NamedBackendFactory& backend,
                                       const std::string& output_dir, const StudyTables& tables,
-                                      const std::vector<int>& level_vertices, std::ostream& log) {
-  const int n_levels = settings.n_levels;
+                                      bool release_levels, std::ostream& log) {
+  const int n_levels = static_cast<int>(levels.size());
   namespace fs = std::filesystem;
   using clock = std::chrono::steady_clock;
   BackendConvergence study;
@@ -174,7 +170,7 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters,
   std::vector<LevelTiming> timings;
   for (int level = 0; level < n_levels; ++level) {
     const clock::time_point level_start = clock::now();
-    auto setup = make_scenario(level_parameters(parameters, level, settings.ratio));
+    Scenario* const setup = levels[level].scenario.get();
     ConvergenceLevel l;
     l.level = level;
     l.mesh_scale = setup->parameters.garment.mesh_scale;
@@ -220,18 +216,21 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters,
         tables.levels->write_row({backend.name, level, l.mesh_scale, l.n_vertices, l.edge_m, m.step,
                                   m.alpha, m.p_mean_Pa(), m.p_theory_Pa,
                                   relative(m.p_mean_Pa(), m.p_theory_Pa)});
+    if (release_levels) levels[level].scenario.reset();
     const bool completed = l.run.completed;
     const std::string failure = l.run.failure;
-    l.seconds = std::chrono::duration<double>(clock::now() - level_start).count();
+    l.seconds =
+        levels[level].seconds + std::chrono::duration<double>(clock::now() - level_start).count();
     timings.push_back({l.n_vertices, l.seconds});
     log << "  " << backend.name << " level " << level << " took "
         << duration_text(timings.back().seconds) << " (this backend so far "
         << duration_text(std::chrono::duration<double>(clock::now() - study_start).count()) << ")";
     if (completed && level + 1 < n_levels) {
       bool measured = false;
-      const double next = expected_seconds(timings, level_vertices[level + 1], &measured);
-      log << "; level " << level + 1 << " (" << level_vertices[level + 1]
-          << " vertices) should take about " << duration_text(next)
+      const int next_vertices = levels[level + 1].n_vertices;
+      const double next = expected_seconds(timings, next_vertices, &measured);
+      log << "; level " << level + 1 << " (" << next_vertices << " vertices) should take about "
+          << duration_text(next)
           << (measured ? " (cost order measured on the levels before)"
                        : " (cost order 1.5 assumed)");
     }
@@ -248,6 +247,17 @@ BackendConvergence run_backend_levels(const CaseParameters& parameters,
 }
 
 }  // namespace
+
+CaseParameters convergence_level_parameters(const CaseParameters& base, int level, double ratio) {
+  CaseParameters p = base;
+  const double factor = std::pow(ratio, -level);
+  p.garment.mesh_scale *= factor;
+  p.garment.spacing.along_x_m *= factor;  // Mesh scale was applied when the file was read
+  p.garment.spacing.along_y_m *= factor;
+  p.garment.spacing.pattern_edge_length_m *= factor;  // a pattern's own edge length; 0 if none
+  p.output.write_vtu = false;
+  return p;
+}
 
 bool ConvergenceStudy::completed() const {
   return std::all_of(backends.begin(), backends.end(),
@@ -333,16 +343,21 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters,
   ConvergenceStudy result;
   StudyTables tables;
   tables.region_indices = chosen_regions(parameters, settings.regions, &result.regions);
-  // Check every level's setup before running any, so a bad mesh scale does not surface after
-  // the coarse levels have run for minutes.
-  std::vector<int> level_vertices;
-  std::vector<std::size_t> level_triangles;
+  // Every level's scenario is made (and so checked) before any runs, so a bad mesh scale does
+  // not surface after the coarse levels have run for minutes; each backend then runs these
+  // same scenarios (convergence_run.h).
+  std::vector<MadeLevel> levels;
   for (int level = 0; level < n_levels; ++level) {
-    const auto setup = make_scenario(level_parameters(parameters, level, settings.ratio));
-    level_vertices.push_back(setup->mesh.n_vertices);
-    level_triangles.push_back(setup->mesh.triangles.size());
+    const auto start = std::chrono::steady_clock::now();
+    MadeLevel made;
+    made.scenario = make_scenario(convergence_level_parameters(parameters, level, settings.ratio));
+    ++result.scenarios_made;
+    made.n_vertices = made.scenario->mesh.n_vertices;
+    made.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    levels.push_back(std::move(made));
   }
-  print_level_sizes(log, level_vertices, level_triangles);
+  if (settings.on_levels_made) settings.on_levels_made(*levels.front().scenario);
+  print_level_sizes(log, levels);
 
   // Under MPI every rank runs the study (the FE solves are distributed); the first writes the
   // tables, as run_scenario does for each level's own.
@@ -360,8 +375,8 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters,
   tables.levels = table ? &*table : nullptr;
   tables.regions = region_table ? &*region_table : nullptr;
   for (const NamedBackendFactory& backend : backends) {
-    result.backends.push_back(
-        run_backend_levels(parameters, settings, backend, output_dir, tables, level_vertices, log));
+    const bool last = &backend == &backends.back();
+    result.backends.push_back(run_backend_levels(levels, backend, output_dir, tables, last, log));
     for (const ConvergenceSummaryRow& r : summarise_convergence(result.backends.back())) {
       const ConvergenceEstimate& e = r.estimate;
       if (summary)

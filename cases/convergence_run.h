@@ -57,6 +57,12 @@
 //   safety_factor       1.25 with three or more levels, 3 with two
 //
 // Each run's own pressure.csv and pressure_theta.csv go to <dir>/<backend>/level_<k>/ (no VTU).
+//
+// Every level's scenario is made once, before any level runs (so that a bad level is found
+// before the coarse ones have run for minutes), and each backend in turn runs that same
+// scenario: a run starts with Scenario::prepare_step(0), which puts the body back in its
+// starting shape (ScenarioBody::morph), and no run changes anything else in a scenario. A case
+// whose placement dresses the garment (docs/dressing.md) thus dresses it once per level.
 #pragma once
 
 #include "cases/case_parameters.h"
@@ -65,6 +71,7 @@
 #include "cases/region_pressure.h"
 #include "cases/scenario_run.h"
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -80,8 +87,10 @@ struct ConvergenceLevel {
   int level = 0;
   double mesh_scale = 1.0;
   int n_vertices = 0;
-  double edge_m = 0.0;   // mean rest edge length, m
-  double seconds = 0.0;  // wall time of the level, setup included
+  double edge_m = 0.0;  // mean rest edge length, m
+  // Wall time of the level: its run and the making of its scenario (made once for all the
+  // backends, counted in each backend's level).
+  double seconds = 0.0;
   RunResult run;
   // The pressure in the study's regions at each step that finished, [step][region].
   std::vector<std::vector<RegionPressure>> region_pressures;
@@ -119,6 +128,7 @@ struct ConvergenceStudy {
   std::vector<ConvergenceSummaryRow> summary;
   std::vector<std::string> regions;  // the regions studied (none without a regions measurement)
   std::vector<RegionConvergenceRow> region_summary;
+  int scenarios_made = 0;  // make_scenario calls of the study: one per level
   bool completed() const;
 };
 
@@ -127,7 +137,14 @@ struct ConvergenceSettings {
   double ratio = 2.0;  // the edge lengths are divided by it from one level to the next
   // The regions to study, by name; empty: every region of the case's regions measurement.
   std::vector<std::string> regions;
+  // Called once every level's scenario is made and before any runs, with level 0's (the case's
+  // own mesh, VTU output off): what the command prints the case's header from.
+  std::function<void(const Scenario& level_0)> on_levels_made;
 };
+
+// The case at level `level` of a study: Garment/Mesh scale and the edge lengths divided by
+// ratio^level, VTU output off.
+CaseParameters convergence_level_parameters(const CaseParameters& base, int level, double ratio);
 
 // Runs `parameters` at settings.n_levels meshes (Mesh scale s0, s0/r, s0/r^2, ... with s0 the
 // case's own and r settings.ratio) on each backend in turn, VTU output off, and writes the
