@@ -116,12 +116,15 @@ struct MadeLevel {
 // Before a long study: the size of each level, so that a user sees what is coming.
 void print_level_sizes(std::ostream& log, const std::vector<MadeLevel>& levels) {
   log << "  levels:";
-  for (std::size_t k = 0; k < levels.size(); ++k)
+  double made_seconds = 0.0;
+  for (std::size_t k = 0; k < levels.size(); ++k) {
     log << (k == 0 ? " " : "; ") << k << ": " << levels[k].n_vertices << " vertices, "
-        << levels[k].scenario->mesh.triangles.size() << " triangles (made in "
-        << duration_text(levels[k].seconds) << ")";
-  log << "\n  (each level's time, and an estimate of the next one's, is printed as the level "
-         "ends)\n";
+        << levels[k].scenario->mesh.triangles.size() << " triangles";
+    made_seconds += levels[k].seconds;
+  }
+  log << "\n  (made in " << duration_text(made_seconds)
+      << ", once for every backend; each level's time, and an estimate of the next one's, is "
+         "printed as the level ends)\n";
 }
 
 // The time the next level should take: this level's, scaled by the growth in vertices to the
@@ -166,7 +169,7 @@ BackendConvergence run_backend_levels(std::vector<MadeLevel>& levels,
   using clock = std::chrono::steady_clock;
   BackendConvergence study;
   study.backend = backend.name;
-  const clock::time_point study_start = clock::now();
+  double study_seconds = 0.0;  // the levels' times so far, their scenarios' making included
   std::vector<LevelTiming> timings;
   for (int level = 0; level < n_levels; ++level) {
     const clock::time_point level_start = clock::now();
@@ -222,9 +225,10 @@ BackendConvergence run_backend_levels(std::vector<MadeLevel>& levels,
     l.seconds =
         levels[level].seconds + std::chrono::duration<double>(clock::now() - level_start).count();
     timings.push_back({l.n_vertices, l.seconds});
+    study_seconds += l.seconds;
     log << "  " << backend.name << " level " << level << " took "
         << duration_text(timings.back().seconds) << " (this backend so far "
-        << duration_text(std::chrono::duration<double>(clock::now() - study_start).count()) << ")";
+        << duration_text(study_seconds) << ")";
     if (completed && level + 1 < n_levels) {
       bool measured = false;
       const int next_vertices = levels[level + 1].n_vertices;
