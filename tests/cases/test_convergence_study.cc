@@ -38,17 +38,23 @@ TEST(ConvergenceStudy, MakesEachLevelOnceAndMatchesIndependentRuns) {
   parameters.output.write_files = false;
   const std::vector<std::string> names{"massspring", "fem"};
   std::vector<NamedBackendFactory> backends;
-  for (const std::string& name : names)
-    backends.push_back({name, [&file, name](const Problem& problem) {
+  // The problem each backend was made on, per backend: the problem lives in its scenario, so
+  // two runs handed the same one ran the same scenario.
+  std::vector<std::vector<const Problem*>> problems(names.size());
+  for (std::size_t b = 0; b < names.size(); ++b)
+    backends.push_back({names[b], [&file, &problems, b, name = names[b]](const Problem& problem) {
+                          problems[b].push_back(&problem);
                           return file.create_backend(name, problem);
                         }});
 
   ConvergenceSettings settings;
   settings.n_levels = 2;
   int headers = 0, level_0_vertices = 0;
+  const Problem* level_0_problem = nullptr;
   settings.on_levels_made = [&](const Scenario& level_0) {
     ++headers;
     level_0_vertices = level_0.mesh.n_vertices;
+    level_0_problem = &level_0.problem;
   };
   std::ostringstream log;
   const ConvergenceStudy study = run_convergence_study(parameters, settings, backends, "", log);
@@ -59,6 +65,13 @@ TEST(ConvergenceStudy, MakesEachLevelOnceAndMatchesIndependentRuns) {
   EXPECT_EQ(headers, 1);
   ASSERT_EQ(study.backends.size(), 2u);
   EXPECT_EQ(level_0_vertices, study.backends[0].levels.at(0).n_vertices);
+  // Both backends ran level 0 on the scenario the hook saw, and level 1 on one other scenario.
+  for (const auto& made_on : problems) {
+    ASSERT_EQ(made_on.size(), 2u);
+    EXPECT_EQ(made_on[0], level_0_problem);
+    EXPECT_NE(made_on[1], level_0_problem);
+  }
+  EXPECT_EQ(problems[0][1], problems[1][1]);
 
   for (std::size_t b = 0; b < names.size(); ++b) {
     const BackendConvergence& backend = study.backends[b];
