@@ -4,6 +4,7 @@
 #include "core/interruption.h"
 #include "core/load_step.h"
 #include "core/residual_history.h"
+#include "core/rigid_motion_fit.h"
 
 #include <petscmat.h>
 #include <petscvec.h>
@@ -104,8 +105,19 @@ std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofV
   for (std::size_t k = 0; k < log.residual_N.size(); ++k)
     history.record(static_cast<int>(k), log.residual_N[k],
                    k < log.step_length.size() ? log.step_length[k] : 0.0);
+  std::string rigid;
+  if (has_increment_) {
+    // How much of the last increment moved the garment as a whole: most of it where the step
+    // crept along a motion the body barely resists (docs/backends.md, "Newton's line search").
+    std::vector<Vec3> owned_increment;
+    for (const int node : pattern_.owned_nodes)
+      owned_increment.push_back(pattern_.node_position(last_increment_, node));
+    const std::vector<Vec3> increment = pattern_.gather_nodes(owned_increment);
+    if (!positions.empty())
+      rigid = "; the last Newton increment is " + text(fit_rigid_motion(positions, increment));
+  }
   return text(locate_residual(positions, residual, body_)) + " (node numbers: welded vertices, " +
-         "then edge midpoints); " + history.text();
+         "then edge midpoints); " + history.text() + rigid;
 }
 
 void NewtonSolver::fail(StopReason reason, const LoadStep& step, const std::string& what,
@@ -410,6 +422,8 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // search (StepReport's newton.n_failed_line_searches); the iteration limit judges.
     if (!accepted) ++log.n_failed_line_searches;
     step_cut_ = parameters_.line_search && step_taken < full_step;
+    last_increment_ = increment;
+    has_increment_ = true;
     x = trial;
     log.step_length.push_back(step_taken);
     if (!tangent_current) assemble(x, true);

@@ -69,6 +69,7 @@ class NewtonSolver {
     step_cut_ = false;
     first_solve_ = true;
     potential_trusted_ = true;
+    has_increment_ = false;
   }
   // The matrix's pattern changed (new constraints): the next solve analyses it afresh.
   void pattern_changed() { linear_solver_->reset(); }
@@ -156,6 +157,9 @@ class NewtonSolver {
     return std::min(shift_N_per_m_ > 0.0 ? 10.0 * shift_N_per_m_ : 1e-2 * stiffness_scale_N_per_m_,
                     kLargestShift * stiffness_scale_N_per_m_);
   }
+  // Newton's increment of the last iteration (ghosted), for the message of a failed step.
+  DofVector last_increment_;
+  bool has_increment_ = false;  // last_increment_ is of this load step
   // Relative tolerance of the next Krylov solve (inexact Newton, see solve()).
   double krylov_tolerance_ = 1e-10;
 };
