@@ -45,7 +45,14 @@ const char* to_string(StopReason reason) {
 namespace {
 
 void write_rounds(std::ostream& out, const std::vector<MultiplierRound>& rounds) {
-  out << "; rounds (iterations: residuals N; gap m, in contact):";
+  out << "; " << text(rounds);
+}
+
+}  // namespace
+
+std::string text(const std::vector<MultiplierRound>& rounds) {
+  std::ostringstream out;
+  out << "rounds (iterations: residuals N; gap m, in contact):";
   for (std::size_t r = 0; r < rounds.size(); ++r) {
     const MultiplierRound& round = rounds[r];
     out << (r ? " |" : "") << " [" << round.iterations << ":";
@@ -56,7 +63,10 @@ void write_rounds(std::ostream& out, const std::vector<MultiplierRound>& rounds)
     values << "; " << round.penetration_m;
     out << values.str() << ", " << round.n_in_contact << "]";
   }
+  return out.str();
 }
+
+namespace {
 
 void write_relaxation(std::ostream& out, const RelaxationReport& r) {
   out << " (" << r.quasi_static_frames << " quasi-static";

@@ -49,6 +49,9 @@ struct MultiplierRound {
   double penetration_m = 0.0;      // largest penetration of a vertex in contact after it
   int n_in_contact = 0;            // vertices (nodes) in contact after it
 };
+// The rounds as the report writes them: "rounds (iterations: residuals N; gap m, in contact):
+// [iterations: residuals; gap, in contact] | ..." (a step that failed quotes them too).
+std::string text(const std::vector<MultiplierRound>& rounds);
 
 // The mass-spring backend's flat-panel start (the paper's Section 4.3), when it ran.
 struct FlatStartReport {
