@@ -1,5 +1,6 @@
 #include "cases/body_region.h"
 #include "core/number_text.h"
+#include "core/plain_text.h"
 
 #include <cmath>
 #include <regex>
@@ -36,13 +37,6 @@ bool BodyRegion::contains(const Vec3& x) const {
 }
 
 namespace {
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\n\r");
-  if (first == std::string::npos) return "";
-  const auto last = text.find_last_not_of(" \t\n\r");
-  return text.substr(first, last - first + 1);
-}
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;

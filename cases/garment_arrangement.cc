@@ -1,5 +1,7 @@
 #include "cases/garment_arrangement.h"
 
+#include "core/plain_text.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -13,12 +15,6 @@ namespace {
 
 const std::vector<std::string> torso_parts = {"torso front", "torso left", "torso back",
                                               "torso right"};
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
 
 std::string lower(std::string text) {
   for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));

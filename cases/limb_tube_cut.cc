@@ -3,6 +3,7 @@
 #include "body/leg_measuring_points.h"
 #include "body/limb_sections.h"
 #include "core/number_text.h"
+#include "core/plain_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,12 +12,6 @@
 namespace tightfit {
 
 namespace {
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\n");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t\n") - first + 1);
-}
 
 bool is_point_name(const std::string& name) {
   const auto& names = leg_point_names();

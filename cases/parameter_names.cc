@@ -1,6 +1,7 @@
 #include "cases/parameter_names.h"
 
 #include "core/closest_names.h"
+#include "core/plain_text.h"
 
 #include <fstream>
 #include <istream>
@@ -8,12 +9,6 @@
 namespace tightfit {
 
 namespace {
-
-std::string trimmed(const std::string& text) {
-  const auto begin = text.find_first_not_of(" \t\r");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t\r") - begin + 1);
-}
 
 std::string joined(const std::vector<std::string>& path) {
   std::string text;

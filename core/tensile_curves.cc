@@ -1,5 +1,6 @@
 #include "core/tensile_curves.h"
 #include "core/number_text.h"
+#include "core/plain_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +10,6 @@
 namespace tightfit {
 
 namespace {
-
-std::string trimmed(const std::string& text) {
-  const auto begin = text.find_first_not_of(" \t");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
-}
 
 double parse_number(const std::string& text, const std::string& entry, const std::string& piece,
                     const std::string& form) {

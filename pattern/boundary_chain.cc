@@ -1,5 +1,7 @@
 #include "pattern/boundary_chain.h"
 
+#include "core/plain_text.h"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -7,12 +9,6 @@
 namespace tightfit::pattern {
 
 namespace {
-
-std::string point_text(const Vec2& x) {
-  char text[80];
-  std::snprintf(text, sizeof text, "(%.6g, %.6g)", x.x(), x.y());
-  return text;
-}
 
 std::string length_text(double d) {
   char text[40];

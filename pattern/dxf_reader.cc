@@ -1,5 +1,6 @@
 #include "pattern/dxf_reader.h"
 
+#include "core/plain_text.h"
 #include "pattern/boundary_chain.h"
 #include "pattern/bspline.h"
 
@@ -40,12 +41,6 @@ struct OpenSpline {
   int fit_points = 0;
   bool rational = false;
 };
-
-std::string trimmed(std::string text) {
-  text.erase(0, text.find_first_not_of(" \t"));
-  text.erase(text.find_last_not_of(" \t\r") + 1);
-  return text;
-}
 
 // "KEY: value" -> value when `text` starts with `key`, in any case ("Piece Name:" as ASTM
 // D6673 prints it, "PIECE NAME:" as most exports do).
@@ -280,12 +275,6 @@ std::vector<std::string> sizes_of(const AamaCollector& collector) {
         std::find(sizes.begin(), sizes.end(), raw.size) == sizes.end())
       sizes.push_back(raw.size);
   return sizes;
-}
-
-std::string point_text(const Vec2& x) {
-  char text[80];
-  std::snprintf(text, sizeof text, "(%.6g, %.6g)", x.x(), x.y());
-  return text;
 }
 
 // The piece's outline in file units, chained, and its corners (per segment: starts at one).

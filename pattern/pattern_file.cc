@@ -1,6 +1,7 @@
 #include "pattern/pattern_file.h"
 
 #include "core/closest_names.h"
+#include "core/plain_text.h"
 
 #include "pattern/dxf_reader.h"
 #include "pattern/garmentcode_reader.h"
@@ -19,12 +20,6 @@ std::string lower_extension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
-}
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\n");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t\n") - first + 1);
 }
 
 std::vector<std::string> split(const std::string& text, const std::string& separator) {

@@ -1,6 +1,7 @@
 #include "cases/design/design_target.h"
 
 #include "cases/compression_class.h"
+#include "core/plain_text.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -9,12 +10,6 @@
 namespace tightfit {
 
 namespace {
-
-std::string trimmed(const std::string& s) {
-  const auto begin = s.find_first_not_of(" \t\n");
-  if (begin == std::string::npos) return "";
-  return s.substr(begin, s.find_last_not_of(" \t\n") - begin + 1);
-}
 
 const NamedValue* find(const std::vector<NamedValue>& list, const std::string& name) {
   for (const NamedValue& v : list)
