@@ -4,7 +4,7 @@
 // the parts of a body (legs, arms, torso) can be told apart and followed from plane to plane.
 #pragma once
 
-#include "contact/triangle_surface.h"
+#include "bodies/triangle_surface.h"
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 // garment's rest radius, r / R0; a body that does not change ignores it).
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 
 #include <optional>
 #include <string>

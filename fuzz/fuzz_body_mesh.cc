@@ -3,7 +3,7 @@
 // contact/triangle_surface.cc); a surface that passes is queried once. Any input must end in a
 // body or in a BodyMeshError, never a crash, a sanitizer report, a hang or a runaway
 // allocation.
-#include "contact/mesh_body.h"
+#include "bodies/mesh_body.h"
 #include "scratch_file.h"
 
 #include <cstddef>

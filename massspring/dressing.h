@@ -8,7 +8,7 @@
 // FlatPanelStart) for any body and any pattern.
 #pragma once
 
-#include "contact/skeleton_shrink.h"
+#include "bodies/skeleton_shrink.h"
 #include "core/backend.h"
 #include "core/pressure_field.h"
 #include "massspring/massspring_parameters.h"

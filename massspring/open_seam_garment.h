@@ -6,7 +6,7 @@
 // the dressing of a body, Dressing) drive it.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
 #include "massspring/bending_hinges.h"

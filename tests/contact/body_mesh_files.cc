@@ -1,7 +1,7 @@
 #include "body_mesh_files.h"
 
-#include "contact/body_mesh_error.h"
-#include "contact/mesh_body.h"
+#include "bodies/body_mesh_error.h"
+#include "bodies/mesh_body.h"
 
 #include <cmath>
 #include <cstdio>

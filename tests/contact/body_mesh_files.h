@@ -2,7 +2,7 @@
 // cylinder or cone), a regular tetrahedron, and writers for OBJ, STL and PLY.
 #pragma once
 
-#include "contact/polygon_mesh.h"
+#include "bodies/polygon_mesh.h"
 
 #include <string>
 #include <vector>

@@ -1,8 +1,8 @@
 // The blended quadric field (contact/blended_quadric_field.h) on the MakeHuman female against a
 // brute-force evaluation of its definition written out here: every vertex of the body, its
 // Wendland weight and facing factor, its quadric, summed in plain loops.
-#include "contact/blended_quadric_field.h"
-#include "contact/mesh_body.h"
+#include "bodies/blended_quadric_field.h"
+#include "bodies/mesh_body.h"
 
 #include <gtest/gtest.h>
 

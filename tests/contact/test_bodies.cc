@@ -1,6 +1,6 @@
 // Cylinder and plane queries against values worked out by hand.
-#include "contact/cylinder.h"
-#include "contact/plane.h"
+#include "bodies/cylinder.h"
+#include "bodies/plane.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>

@@ -1,11 +1,11 @@
 // Every body kind's normal derivative dn/dx and gap gradient dg/dx against central finite
 // differences of its own query().
+#include "bodies/cone.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
+#include "bodies/morphing_mesh_body.h"
+#include "bodies/plane.h"
 #include "body_mesh_files.h"
-#include "contact/cone.h"
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
-#include "contact/morphing_mesh_body.h"
-#include "contact/plane.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // can store, and the inputs fuzzing found (tests/contact/fuzz_findings/, from scripts/fuzz.sh).
 // Each must end in a BodyMeshError naming the file (exit status 2), never a crash, a sanitizer
 // report or an allocation the size of the announced count.
+#include "bodies/body_mesh_error.h"
+#include "bodies/mesh_body.h"
 #include "body_mesh_files.h"
-#include "contact/body_mesh_error.h"
-#include "contact/mesh_body.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Body mesh files that are broken or describe no proper body: each is refused with a message
 // that names the file, what is wrong and where (face, edge or vertex indices, or the line).
 // And the import options, against transforms worked out by hand.
+#include "bodies/body_mesh_error.h"
+#include "bodies/mesh_body.h"
+#include "bodies/morphing_mesh_body.h"
 #include "body_mesh_files.h"
-#include "contact/body_mesh_error.h"
-#include "contact/mesh_body.h"
-#include "contact/morphing_mesh_body.h"
 
 #include <gtest/gtest.h>
 

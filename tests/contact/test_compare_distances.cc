@@ -1,7 +1,7 @@
 // compare_distances (contact/triangle_bvh.h), by which the ranks' nearest points of their blocks
 // of a surface are combined: exact where squared distances in double round alike, and the
 // nearest over blocks of a random triangle soup is the point one search of the whole finds.
-#include "contact/triangle_bvh.h"
+#include "bodies/triangle_bvh.h"
 
 #include <gtest/gtest.h>
 

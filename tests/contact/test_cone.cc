@@ -1,5 +1,5 @@
 // The cone's exact distance, normal and surface parameters against values worked out by hand.
-#include "contact/cone.h"
+#include "bodies/cone.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The MakeHuman bodies of data/bodies against what their README states (closed single-piece
 // genus-0 surfaces, 1.59 m and 1.73 m tall, one connectivity for both), the invariants of the
 // import options, and the female-to-male morph.
-#include "contact/mesh_body.h"
-#include "contact/morphing_mesh_body.h"
+#include "bodies/mesh_body.h"
+#include "bodies/morphing_mesh_body.h"
 
 #include <gtest/gtest.h>
 

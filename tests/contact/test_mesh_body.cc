@@ -2,10 +2,10 @@
 // cone against the analytic bodies within the predicted chord error, the pseudo-normal sign
 // near edges and vertices, the smooth normal field's continuity, the skin offset, and the
 // surface locations kept for friction.
+#include "bodies/cone.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
 #include "body_mesh_files.h"
-#include "contact/cone.h"
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
 
 #include <gtest/gtest.h>
 

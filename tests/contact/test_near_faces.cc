@@ -2,8 +2,8 @@
 // body, each step from where the last one was, get the same answer as a fresh query and the
 // distance of a brute-force search over every triangle, whether they stay within the faces
 // kept or move beyond them; a new shape of the body is not answered from the old faces.
-#include "contact/mesh_body.h"
-#include "contact/scaled_body.h"
+#include "bodies/mesh_body.h"
+#include "bodies/scaled_body.h"
 
 #include <gtest/gtest.h>
 

@@ -3,9 +3,9 @@
 // coordinates that are not numbers, headers VTK misreads. Each is refused by
 // contact/ply_file_check.cc before VTK reads it, naming the file and the face, vertex or line
 // (exit status 2); the same tetrahedron written correctly is read.
+#include "bodies/body_mesh_error.h"
+#include "bodies/mesh_body.h"
 #include "body_mesh_files.h"
-#include "contact/body_mesh_error.h"
-#include "contact/mesh_body.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // surface the Newton steps to the closest point, answered from the kept faces, land where the
 // tree's answer does; the kept faces' closest point is the brute-force nearest point over every
 // face.
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
 
 #include <gtest/gtest.h>
 

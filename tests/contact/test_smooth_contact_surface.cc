@@ -3,8 +3,8 @@
 // its gradient and Hessian against finite differences of its own gap, the work of its contact
 // force round a closed loop (zero for a force that derives from an energy), and the surface
 // location's round trip.
+#include "bodies/mesh_body.h"
 #include "body_mesh_files.h"
-#include "contact/mesh_body.h"
 #include "contact/penalty_contact.h"
 
 #include <gtest/gtest.h>

@@ -3,10 +3,10 @@
 // to radius R along its radius) and on a faceted cylinder, where a single step along the
 // distance's gradient may fall short near an edge; a point deeper than allowed leaves every
 // point where it was and is named.
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
+#include "bodies/surface_return.h"
 #include "body_mesh_files.h"
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
-#include "contact/surface_return.h"
 
 #include <gtest/gtest.h>
 

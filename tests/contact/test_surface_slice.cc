@@ -3,9 +3,9 @@
 // cone's is the polygon of its radius at that height, two legs side by side give the loop round
 // the point asked for, and a plane that misses the body is refused naming its height; a tube
 // placed round such a limb goes round its sections.
-#include "contact/mesh_import.h"
-#include "contact/surface_slice.h"
-#include "contact/tube_placement.h"
+#include "bodies/mesh_import.h"
+#include "bodies/surface_slice.h"
+#include "bodies/tube_placement.h"
 #include "core/tube_garment.h"
 #include "tests/contact/body_mesh_files.h"
 
