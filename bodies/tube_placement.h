@@ -17,7 +17,7 @@ namespace tightfit {
 // v - height/2. The triangles' winding then makes the normals point outwards.
 // Throws std::invalid_argument when the garment is not a ring.
 // The same round any axis: the tube's middle at `centre_m`, angles from
-// reference_direction_normal_to(axis) (contact/axis_frame.h), the tube along `axis` (any length).
+// reference_direction_normal_to(axis) (bodies/axis_frame.h), the tube along `axis` (any length).
 // With `stretch` > 0 each ring lies at that many times its own rest radius (its girth over
 // 2 pi) instead of at `radius_m`: a tapered tube stretched evenly.
 std::vector<Vec3> place_tube_round_axis(const Garment& garment, const SimulationMesh& mesh,
@@ -25,7 +25,7 @@ std::vector<Vec3> place_tube_round_axis(const Garment& garment, const Simulation
                                         double stretch = 0.0);
 
 // The same round a limb of the body `surface`: each ring centred on the centroid of the body's
-// section in its plane (normal to `axis`, the loop round the axis; contact/surface_slice.h) and
+// section in its plane (normal to `axis`, the loop round the axis; bodies/surface_slice.h) and
 // `clearance_m` outside that section's farthest point, so a tube follows a bent leg or arm.
 // Where that circle would come nearer than `clearance_m` to another loop of the plane (the
 // other thigh near the crotch), the ring is the section offset by `clearance_m` along each

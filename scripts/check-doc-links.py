@@ -6,7 +6,7 @@ Usage: scripts/check-doc-links.py [REPOSITORY_ROOT]
 Checked, in the text and in the code blocks alike:
 - relative Markdown links and images, `[text](target)` and `![alt](target)`: the file exists
   (relative to the page), and an `#anchor` names a heading of the target page;
-- file paths cited in the text (`cases/cylinder_T.prm`, `contact/mesh_body.h`, `docs/model.md`,
+- file paths cited in the text (`cases/cylinder_T.prm`, `bodies/mesh_body.h`, `docs/model.md`,
   `scripts/test.sh`, ...): they exist in the repository; a bare page name (`parameters.md`)
   exists beside the page or in docs/;
 - cited sections, `docs/model.md, "Friction"` or `[model.md](model.md), "Friction"`: the page

@@ -1,5 +1,5 @@
 // Placement/Kind = dressing: the garment's panels, unsewn, wrapped on an elliptic cylinder round
-// an axis outside the body (contact/panel_wrap.h), then sewn onto the body by the dressing stage
+// an axis outside the body (bodies/panel_wrap.h), then sewn onto the body by the dressing stage
 // (massspring/dressing.h): seam springs close the seams while the body grows from a shrunk
 // start to its shape; the welded garment is the start of the load steps, on either backend
 // (docs/dressing.md).

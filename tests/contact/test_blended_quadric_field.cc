@@ -1,4 +1,4 @@
-// The blended quadric field (contact/blended_quadric_field.h) on the MakeHuman female against a
+// The blended quadric field (bodies/blended_quadric_field.h) on the MakeHuman female against a
 // brute-force evaluation of its definition written out here: every vertex of the body, its
 // Wendland weight and facing factor, its quadric, summed in plain loops.
 #include "bodies/blended_quadric_field.h"

@@ -1,4 +1,4 @@
-// compare_distances (contact/triangle_bvh.h), by which the ranks' nearest points of their blocks
+// compare_distances (bodies/triangle_bvh.h), by which the ranks' nearest points of their blocks
 // of a surface are combined: exact where squared distances in double round alike, and the
 // nearest over blocks of a random triangle soup is the point one search of the whole finds.
 #include "bodies/triangle_bvh.h"

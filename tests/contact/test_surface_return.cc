@@ -1,4 +1,4 @@
-// return_onto_surface (contact/surface_return.h): points a penalty left inside a body go back
+// return_onto_surface (bodies/surface_return.h): points a penalty left inside a body go back
 // onto its surface, checked against the cylinder's own distance (a point at radius rho < R goes
 // to radius R along its radius) and on a faceted cylinder, where a single step along the
 // distance's gradient may fall short near an edge; a point deeper than allowed leaves every

@@ -1,4 +1,4 @@
-// Slices of body surfaces (contact/surface_slice.h) against the geometry they were built from: a
+// Slices of body surfaces (bodies/surface_slice.h) against the geometry they were built from: a
 // faceted cylinder's section is its polygon (perimeter, area, centroid on the axis), a faceted
 // cone's is the polygon of its radius at that height, two legs side by side give the loop round
 // the point asked for, and a plane that misses the body is refused naming its height; a tube
@@ -121,7 +121,7 @@ TEST(SurfaceSlice, PlaneMissingTheBodyIsRefused) {
 namespace tightfit {
 namespace {
 
-// A tube placed round a limb (contact/tube_placement.h) that is off the axis given: every ring
+// A tube placed round a limb (bodies/tube_placement.h) that is off the axis given: every ring
 // goes round the section's centroid, its farthest point (the polygon's circumradius) plus the
 // clearance away.
 TEST(TubeRoundLimb, RingsCentreOnTheSections) {
