@@ -14,7 +14,7 @@
 // default, bodies/blended_quadric_field.h) lies within a few micrometres of the true cylinder
 // (tests/contact/test_smooth_contact_surface.cc), so its tube reads the cylinder's pressure.
 #include "tests/cases/body_case.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <cmath>
 

@@ -5,9 +5,9 @@
 #include "bodies/mesh_body.h"
 #include "bodies/morphing_mesh_body.h"
 #include "bodies/plane.h"
-#include "body_mesh_files.h"
 #include "central_difference.h"
 #include "contact/coulomb_friction.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 

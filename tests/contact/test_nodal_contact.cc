@@ -3,9 +3,9 @@
 #include "bodies/cone.h"
 #include "bodies/cylinder.h"
 #include "bodies/mesh_body.h"
-#include "body_mesh_files.h"
 #include "central_difference.h"
 #include "contact/nodal_contact.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 

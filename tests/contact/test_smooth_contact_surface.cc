@@ -4,8 +4,8 @@
 // force round a closed loop (zero for a force that derives from an energy), and the surface
 // location's round trip.
 #include "bodies/mesh_body.h"
-#include "body_mesh_files.h"
 #include "contact/penalty_contact.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include "fem/contact_set_prediction.h"
 #include "fem/fem_backend.h"
 #include "residual_jacobian.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 #include "tube_problem.h"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 // FemBackend::potential_defect_N, the closed form of that difference.
 #include "bodies/mesh_body.h"
 #include "fem/fem_backend.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 #include "tube_problem.h"
 
 #include <gtest/gtest.h>

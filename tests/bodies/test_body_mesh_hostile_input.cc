@@ -1,5 +1,5 @@
 // Body mesh files made to hurt: headers that announce more than the file holds or the machine
-// can store, and the inputs fuzzing found (tests/contact/fuzz_findings/, from scripts/fuzz.sh).
+// can store, and the inputs fuzzing found (tests/bodies/fuzz_findings/, from scripts/fuzz.sh).
 // Each must end in a BodyMeshError naming the file (exit status 2), never a crash, a sanitizer
 // report or an allocation the size of the announced count.
 #include "bodies/body_mesh_error.h"

@@ -7,7 +7,7 @@
 #include "bodies/surface_slice.h"
 #include "bodies/tube_placement.h"
 #include "core/tube_garment.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
