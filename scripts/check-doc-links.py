@@ -21,7 +21,7 @@ import pathlib
 import re
 import sys
 
-SOURCE_FOLDERS = ("app", "bench", "cases", "contact", "core", "data", "docs", "fem", "fuzz",
+SOURCE_FOLDERS = ("app", "bench", "bodies", "body", "cases", "contact", "core", "data", "docs", "fem", "fuzz",
                   "instruments", "io", "massspring", "pattern", "scripts", "tests")
 CODE_SUFFIXES = (".h", ".cc", ".sh", ".py", ".txt", ".prm", ".cmake")
 
