@@ -57,8 +57,8 @@ TEST(BodyMeshInput, WrongNumbersInObj) {
   expect_refused(path, {"line 2", "'x1' is not a finite number"});
   write_text(path, "v 1 1 1\nv 1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
   expect_refused(path, {"line 2", "three coordinates"});
-  // Face indices are checked against the file's lines before VTK reads it (VTK follows a
-  // texture index past the "vt" lines into a null pointer).
+  // Face indices are checked against the file's lines (VTK's reader followed a texture index
+  // past the "vt" lines into a null pointer).
   write_text(path, tetrahedron_vertices + "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 9\n");
   expect_refused(path, {"line 8", "face corner '9'", "not one of the 4 'v' lines"});
   write_text(path, tetrahedron_vertices + "f 1 2 3\nf 1 4 2\nf 1/1 3 4\nf 2 4 3\n");
@@ -86,6 +86,31 @@ TEST(BodyMeshInput, TruncatedStlAndPly) {
     write_text(temporary_path(b.file), b.text);
     expect_refused(temporary_path(b.file), b.words);
   }
+}
+
+// A face of 5 corners or a polyline: PolygonMesh holds triangles and quads only, refused naming
+// the line.
+TEST(BodyMeshInput, ObjFacesOtherThanTrianglesAndQuadsNameTheLine) {
+  const std::string path = temporary_path("pentagon.obj");
+  write_text(path, tetrahedron_vertices + "v 0 0 0\nf 1 2 3 5 4\nf 1 4 2\n");
+  expect_refused(path, {"line 6", "face 0 has 5 vertices"});
+  write_text(path, tetrahedron_vertices + "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\nl 1 2\n");
+  expect_refused(path, {"line 9", "polyline"});
+}
+
+// Texture coordinates and normals name lines of their own: the faces still share the file's
+// vertices, so the tetrahedron is one closed surface of 4 vertices whatever indices its
+// corners give them (VTK's reader gave each corner a vertex of its own, an open surface), with
+// its volume a^3 / (6 sqrt 2) = 8/3 for edge a = 2 sqrt(2).
+TEST(BodyMeshInput, ObjTextureAndNormalIndicesKeepTheSurfaceWelded) {
+  const std::string path = temporary_path("textured.obj");
+  write_text(path, tetrahedron_vertices +
+                       "vt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n"
+                       "f 1/2/1 2/1/1 3/3/1\nf 1/3 4/1 2/2\nf 1//1 3//1 4//1\nf 2 4 3\n");
+  const auto body = load_mesh_body(path, {});
+  EXPECT_EQ(body->surface().vertices_m.size(), 4u);
+  EXPECT_NEAR(enclosed_volume_m3(body->surface().vertices_m, body->surface().triangles), 8.0 / 3.0,
+              1e-14);
 }
 
 TEST(BodyMeshInput, MissingFileAndUnknownType) {
@@ -136,8 +161,8 @@ TEST(BodyMeshInput, InwardFacing) {
 }
 
 // A coordinate that is not a finite number reaches no distance query. OBJ and ASCII STL spell
-// it "nan" or "inf", a binary STL holds the bits. VTK's OBJ reader reads "nan" as 0 (the file
-// was accepted with a wrong vertex): refused naming the line before VTK reads it; the STL
+// it "nan" or "inf", a binary STL holds the bits. VTK's OBJ reader read "nan" as 0 (the file
+// was accepted with a wrong vertex): the OBJ reader refuses it naming the line; VTK's STL
 // reader passes such values through and the vertex is refused after.
 TEST(BodyMeshInput, CoordinatesThatAreNotFiniteInObjAndStl) {
   const std::string obj = temporary_path("nan.obj");

@@ -1,7 +1,7 @@
 // PLY files whose data VTK's reader would follow out of bounds: faces naming vertices that do
 // not exist (past the count, negative), lists of the wrong length, ASCII lines short of values,
-// coordinates that are not numbers, headers VTK misreads. Each is refused by
-// bodies/ply_file_check.cc before VTK reads it, naming the file and the face, vertex or line
+// coordinates that are not numbers, headers VTK misreads. Each is refused by tightfit's PLY
+// reader (bodies/ply_file_reader.cc) as it reads, naming the file and the face, vertex or line
 // (exit status 2); the same tetrahedron written correctly is read.
 #include "bodies/body_mesh_error.h"
 #include "bodies/mesh_body.h"

@@ -1,4 +1,4 @@
-#include "bodies/ply_file_check.h"
+#include "bodies/ply_file_reader.h"
 
 #include "bodies/body_mesh_error.h"
 
@@ -274,13 +274,18 @@ class PlyValues {
   std::size_t next_word_ = 0;
 };
 
+// 0, 1, 2 for the coordinates x, y, z; -1 for any other property.
+int coordinate_axis(const std::string& name) {
+  return name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1;
+}
+
 bool is_whole(double value) {
   return std::isfinite(value) && value == std::floor(value);
 }
 
 }  // namespace
 
-void check_ply_file(const std::string& path) {
+PolygonMesh read_ply_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const PlyHeader header = read_header(in, path);
   check_elements(header, path);
@@ -288,7 +293,11 @@ void check_ply_file(const std::string& path) {
   const std::string announced = "the header announces " + std::to_string(header.vertices) +
                                 " vertices and " + std::to_string(header.faces) + " faces";
   PlyValues values(in, header);
+  PolygonMesh mesh;
+  mesh.vertices.assign(header.vertices, Vec3::Zero());
+  mesh.faces.reserve(header.faces);
   for (const PlyElement& element : header.elements) {
+    const bool vertex = element.name == "vertex";
     for (long i = 0; i < element.count; ++i) {
       const std::string where = element.name + " " + std::to_string(i);
       const auto fault = [&](const std::string& message) {
@@ -311,10 +320,12 @@ void check_ply_file(const std::string& path) {
         double value = 0;
         if (!property.list) {
           if (!values.read(property.value, value)) throw short_of_values();
-          const bool coordinate =
-              property.name == "x" || property.name == "y" || property.name == "z";
-          if (element.name == "vertex" && coordinate && !std::isfinite(value))
+          const int axis = !vertex ? -1 : coordinate_axis(property.name);
+          if (axis < 0) continue;
+          if (!std::isfinite(value))
             throw fault("the coordinate " + property.name + " is not a finite number");
+          // VTK's reader kept coordinates in single precision: read as it did.
+          mesh.vertices[i][axis] = static_cast<double>(static_cast<float>(value));
           continue;
         }
         double count = 0;
@@ -326,18 +337,22 @@ void check_ply_file(const std::string& path) {
         if (indices && (count < 3 || count > 4))
           throw fault("has " + std::to_string(static_cast<long>(count)) +
                       " vertices (triangles and quads only)");
+        if (indices) mesh.faces.emplace_back();
         for (long k = 0; k < static_cast<long>(count); ++k) {
           if (!values.read(property.value, value)) throw short_of_values();
-          if (indices && (!is_whole(value) || value < 0 || value >= header.vertices)) {
+          if (!indices) continue;
+          if (!is_whole(value) || value < 0 || value >= header.vertices) {
             std::ostringstream index;
             index << std::setprecision(17) << value;  // a whole index in full, not 1.7e+07
             throw fault("names vertex " + index.str() + " (counted from 0) of " +
                         std::to_string(header.vertices));
           }
+          mesh.faces.back().push_back(static_cast<int>(value));
         }
       }
     }
   }
+  return mesh;
 }
 
 }  // namespace tightfit
