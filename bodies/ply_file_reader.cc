@@ -293,9 +293,9 @@ PolygonMesh read_ply_file(const std::string& path) {
   const std::string announced = "the header announces " + std::to_string(header.vertices) +
                                 " vertices and " + std::to_string(header.faces) + " faces";
   PlyValues values(in, header);
+  // Vertices and faces are stored as the file proves to hold them, never allocated for the
+  // header's counts alone.
   PolygonMesh mesh;
-  mesh.vertices.assign(header.vertices, Vec3::Zero());
-  mesh.faces.reserve(header.faces);
   for (const PlyElement& element : header.elements) {
     const bool vertex = element.name == "vertex";
     for (long i = 0; i < element.count; ++i) {
@@ -316,6 +316,7 @@ PolygonMesh read_ply_file(const std::string& path) {
       if (!values.start_instance())
         throw BodyMeshError("body mesh '" + path + "': truncated: " + announced +
                             ", the file ends before " + where);
+      if (vertex) mesh.vertices.push_back(Vec3::Zero());
       for (const PlyProperty& property : element.properties) {
         double value = 0;
         if (!property.list) {
@@ -325,7 +326,7 @@ PolygonMesh read_ply_file(const std::string& path) {
           if (!std::isfinite(value))
             throw fault("the coordinate " + property.name + " is not a finite number");
           // VTK's reader kept coordinates in single precision: read as it did.
-          mesh.vertices[i][axis] = static_cast<double>(static_cast<float>(value));
+          mesh.vertices.back()[axis] = static_cast<double>(static_cast<float>(value));
           continue;
         }
         double count = 0;
