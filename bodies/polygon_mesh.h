@@ -14,8 +14,7 @@ struct PolygonMesh {
   std::vector<std::vector<int>> faces;  // vertex indices from 0, in the file's order
 };
 
-// Reads an OBJ, STL or PLY file (chosen by the extension, any case): OBJ and PLY with
-// tightfit's readers (bodies/obj_file_reader.h, bodies/ply_file_reader.h), STL with VTK's.
+// Reads an OBJ, STL or PLY file by its extension, any case (OBJ, PLY: bodies/*_file_reader.h).
 // Throws BodyMeshError naming the file and what is wrong: a missing or unreadable file, an
 // unknown extension, a reader's error (truncated or malformed numbers), no faces, a vertex
 // index out of range, a face with fewer than 3 or more than 4 vertices, a coordinate that is
