@@ -1,9 +1,9 @@
 #include "app/girths_command.h"
 
+#include "bodies/surface_slice.h"
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_body.h"
-#include "contact/surface_slice.h"
 
 #include <cstdio>
 #include <ostream>

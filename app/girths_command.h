@@ -1,5 +1,5 @@
 // `tightfit girths CASE.prm --near X,Y,Z --heights ...`: the girths of the case's body at given
-// heights, and the axis of the limb they belong to (contact/surface_slice.h).
+// heights, and the axis of the limb they belong to (bodies/surface_slice.h).
 #pragma once
 
 #include "app/command_line.h"

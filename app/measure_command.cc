@@ -2,6 +2,8 @@
 #include "core/number_text.h"
 
 #include "app/command_line.h"
+#include "bodies/mesh_import.h"
+#include "bodies/polygon_mesh.h"
 #include "body/anatomical_regions.h"
 #include "body/body_picture.h"
 #include "body/body_report.h"
@@ -9,8 +11,6 @@
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_body.h"
-#include "contact/mesh_import.h"
-#include "contact/polygon_mesh.h"
 
 #include <filesystem>
 #include <ostream>

@@ -7,10 +7,10 @@
 // - build_tree: CGAL's AABB tree and its distance-query kd-tree over the triangles.
 // - morph_step: what a morphing body does between load steps: blend, check, normals, tree.
 // - load: read the OBJ (VTK), import, check, normals, tree.
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
-#include "contact/morphing_mesh_body.h"
-#include "contact/triangle_bvh.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
+#include "bodies/morphing_mesh_body.h"
+#include "bodies/triangle_bvh.h"
 
 #include <benchmark/benchmark.h>
 

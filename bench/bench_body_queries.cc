@@ -11,7 +11,7 @@
 //   whole answer (query_near), `force` what a mass-spring frame without friction asks
 //   (query_parts without closest point, dn/dx and location), `fresh` query() (the tree every
 //   time).
-#include "contact/mesh_body.h"
+#include "bodies/mesh_body.h"
 
 #include <benchmark/benchmark.h>
 

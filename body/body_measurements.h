@@ -5,7 +5,7 @@
 // T-pose).
 #pragma once
 
-#include "contact/triangle_surface.h"
+#include "bodies/triangle_surface.h"
 
 #include <stdexcept>
 #include <string>

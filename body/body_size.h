@@ -3,7 +3,7 @@
 // too large, a person read with the wrong up axis lies along x or y.
 #pragma once
 
-#include "contact/triangle_surface.h"
+#include "bodies/triangle_surface.h"
 
 #include <string>
 

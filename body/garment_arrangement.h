@@ -3,8 +3,8 @@
 // dressing shrinks that body about (docs/arrangement.md "Arrangement from the pattern file").
 #pragma once
 
+#include "bodies/skeleton_shrink.h"
 #include "body/body_measurements.h"
-#include "contact/skeleton_shrink.h"
 #include "core/garment.h"
 
 #include <string>

@@ -1,10 +1,10 @@
 // Every closed curve where a family of parallel planes cuts a body surface: the sections a
-// tailor's tape goes round (docs/measuring-bodies.md). Unlike contact/surface_slice.h,
+// tailor's tape goes round (docs/measuring-bodies.md). Unlike bodies/surface_slice.h,
 // which returns the one loop round a given point, a cutter returns all loops of a plane, so that
 // the parts of a body (legs, arms, torso) can be told apart and followed from plane to plane.
 #pragma once
 
-#include "contact/triangle_surface.h"
+#include "bodies/triangle_surface.h"
 
 #include <vector>
 

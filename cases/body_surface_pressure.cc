@@ -1,8 +1,8 @@
 #include "cases/body_surface_pressure.h"
 
+#include "bodies/triangle_bvh.h"
 #include "cases/nearest_over_ranks.h"
 #include "cases/step_measurement.h"
-#include "contact/triangle_bvh.h"
 #include "core/mesh_geometry.h"
 #include "core/units.h"
 

@@ -18,9 +18,9 @@
 // two interpolate the corners' pressures with different rounding (1e-16 relative, measured).
 #pragma once
 
+#include "bodies/rigid_body.h"
 #include "cases/nearest_over_ranks.h"
 #include "contact/pressure_extractor.h"
-#include "contact/rigid_body.h"
 #include "io/vtu_writer.h"
 
 #include <vector>

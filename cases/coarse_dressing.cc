@@ -1,7 +1,7 @@
 #include "cases/coarse_dressing.h"
 
+#include "bodies/surface_return.h"
 #include "cases/scenario.h"
-#include "contact/surface_return.h"
 #include "core/mesh_transfer.h"
 #include "massspring/massspring_backend.h"
 

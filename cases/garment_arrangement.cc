@@ -26,7 +26,7 @@ bool is_torso(const std::string& part) {
          std::find(torso_parts.begin(), torso_parts.end(), part) != torso_parts.end();
 }
 
-// Round the axis from the front towards the body's left (contact/panel_wrap.h's angles).
+// Round the axis from the front towards the body's left (bodies/panel_wrap.h's angles).
 double torso_part_angle_rad(const std::string& part) {
   const auto k = std::find(torso_parts.begin(), torso_parts.end(), part) - torso_parts.begin();
   return 0.5 * M_PI * double(k);

@@ -11,8 +11,8 @@
 // arranged) over the body's girth there, less one.
 #pragma once
 
+#include "bodies/panel_wrap.h"
 #include "body/body_measurements.h"
-#include "contact/panel_wrap.h"
 #include "core/garment.h"
 
 #include <map>

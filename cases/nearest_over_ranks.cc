@@ -1,6 +1,6 @@
 #include "cases/nearest_over_ranks.h"
 
-#include "contact/triangle_bvh.h"
+#include "bodies/triangle_bvh.h"
 
 #include <mpi.h>
 

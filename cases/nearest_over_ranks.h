@@ -32,7 +32,7 @@ struct NearestReading {
 };
 
 // Replaces each query point's reading by the nearest over the ranks (collective): nearer by
-// compare_distances (contact/triangle_bvh.h), the exact comparison the search tree itself
+// compare_distances (bodies/triangle_bvh.h), the exact comparison the search tree itself
 // decides by, and between equally near points the lower triangle index, so that every rank
 // keeps the same reading whatever the order of the ranks' answers. With one rank it returns.
 void keep_nearest_over_ranks(std::vector<NearestReading>& readings, const RankShare& share);

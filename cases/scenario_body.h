@@ -1,9 +1,9 @@
-// The body of a scenario: a rigid body (contact/rigid_body.h) whose shape the load steps
+// The body of a scenario: a rigid body (bodies/rigid_body.h) whose shape the load steps
 // change through one number, the body's morph parameter alpha (a cylinder: its radius over the
 // garment's rest radius, r / R0; a body that does not change ignores it).
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 
 #include <optional>
 #include <string>

@@ -14,7 +14,7 @@
 // the solve converged).
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/types.h"
 
 namespace tightfit {

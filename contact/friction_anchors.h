@@ -9,8 +9,8 @@
 // will stick when it touches.
 #pragma once
 
+#include "bodies/rigid_body.h"
 #include "contact/coulomb_friction.h"
-#include "contact/rigid_body.h"
 
 #include <vector>
 

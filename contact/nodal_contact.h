@@ -9,7 +9,7 @@
 // pressure does not depend on the penalty.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/types.h"
 
 namespace tightfit {

@@ -12,7 +12,7 @@
 // (strain / beta) whatever the fabric and mesh: see docs/model.md ("Contact").
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/surface_state.h"
 
 #include <vector>

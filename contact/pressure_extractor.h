@@ -12,8 +12,8 @@
 // friction traction (zero on the frictionless bodies of today).
 #pragma once
 
-#include "contact/cylinder.h"
-#include "contact/rigid_body.h"
+#include "bodies/cylinder.h"
+#include "bodies/rigid_body.h"
 #include "core/mesh_geometry.h"
 #include "core/pressure_field.h"
 #include "core/surface_state.h"

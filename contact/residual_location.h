@@ -7,7 +7,7 @@
 // vertex far from it.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/types.h"
 
 #include <string>

@@ -28,7 +28,7 @@
 // residual.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "fem/contact_nodes.h"
 #include "fem/pattern_mesh.h"
 

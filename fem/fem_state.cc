@@ -1,6 +1,6 @@
 #include "fem/fem_state.h"
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/mesh_geometry.h"
 #include "fem/traction_recovery.h"
 

@@ -34,7 +34,7 @@ class MembraneAssembly {
   double energy_J(const DofVector& x, const ContactNodes& contact, bool gravity_on) const;
   // How far R(x) is from energy_J's gradient, N: the contact force takes the body's normal n
   // where the potential's gradient takes the signed distance's, dg/dx, and on a mesh body the
-  // two differ (contact/rigid_body.h). The 2-norm over every rank of lambda (n - dg/dx) at the
+  // two differ (bodies/rigid_body.h). The 2-norm over every rank of lambda (n - dg/dx) at the
   // nodes in contact, held directions removed (zero on the analytic bodies).
   double potential_defect_N(const DofVector& x, const ContactNodes& contact) const;
 

@@ -4,7 +4,7 @@
 // membrane is slack. The residual is never modified, so the converged state is unbiased.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/backend.h"
 #include "fem/fem_parameters.h"
 #include "fem/newton_system.h"

@@ -10,7 +10,7 @@
 // with a garment round it or a body under friction none.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/constrained_directions.h"
 
 #include <vector>

@@ -1,9 +1,9 @@
 // libFuzzer target: a body mesh file (TIGHTFIT_FUZZ_EXTENSION: obj, stl or ply) read, imported
-// and checked as a mesh body is (contact/polygon_mesh_reader.cc, contact/mesh_import.cc,
-// contact/triangle_surface.cc); a surface that passes is queried once. Any input must end in a
+// and checked as a mesh body is (bodies/polygon_mesh_reader.cc, bodies/mesh_import.cc,
+// bodies/triangle_surface.cc); a surface that passes is queried once. Any input must end in a
 // body or in a BodyMeshError, never a crash, a sanitizer report, a hang or a runaway
 // allocation.
-#include "contact/mesh_body.h"
+#include "bodies/mesh_body.h"
 #include "scratch_file.h"
 
 #include <cstddef>

@@ -5,7 +5,7 @@
 // curvature along each principal direction of stress (zero along a straight line).
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/material.h"
 #include "instruments/stamp.h"
 

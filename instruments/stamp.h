@@ -4,7 +4,7 @@
 // deformation: its principal stretches and directions. docs/instruments.md gives the fit.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/garment.h"
 #include "instruments/pattern_point.h"
 

@@ -1,10 +1,10 @@
 #include "massspring/dressing.h"
 
-#include "contact/surface_return.h"
+#include "bodies/surface_return.h"
 
-#include "contact/rigid_body.h"
-#include "contact/scaled_body.h"
-#include "contact/skeleton_shrunk_body.h"
+#include "bodies/rigid_body.h"
+#include "bodies/scaled_body.h"
+#include "bodies/skeleton_shrunk_body.h"
 #include "core/interruption.h"
 #include "massspring/open_seam_garment.h"
 #include "massspring/unwelded_panels.h"

@@ -8,7 +8,7 @@
 // FlatPanelStart) for any body and any pattern.
 #pragma once
 
-#include "contact/skeleton_shrink.h"
+#include "bodies/skeleton_shrink.h"
 #include "core/backend.h"
 #include "core/pressure_field.h"
 #include "massspring/massspring_parameters.h"
@@ -41,7 +41,7 @@ struct DressingSettings {
   // About an axis (lengths along it kept: heights stay, the body thins) when given.
   std::optional<Vec3> scale_axis;
   // If given, the body shrinks about these bones instead, each part about its own axis
-  // (contact/skeleton_shrink.h; the body's mesh is its display mesh); centre and axis unused.
+  // (bodies/skeleton_shrink.h; the body's mesh is its display mesh); centre and axis unused.
   std::vector<SkeletonBone> skeleton;
   double skeleton_blend_m = 0.03;  // SkeletonShrink's blend width, m
   // The arms turned away from the torso by this angle at the start scale, and back as the body

@@ -2,7 +2,7 @@
 // on opposite sides of the cylinder at a small equal distance, facing its axis.
 #pragma once
 
-#include "contact/cylinder.h"
+#include "bodies/cylinder.h"
 #include "core/garment.h"
 
 #include <vector>

@@ -6,7 +6,7 @@
 // garment carries on from there (MassSpringBackend).
 #pragma once
 
-#include "contact/cylinder.h"
+#include "bodies/cylinder.h"
 #include "core/backend.h"
 #include "massspring/massspring_parameters.h"
 #include "massspring/open_seam_garment.h"

@@ -1,10 +1,10 @@
 #include "massspring/massspring_backend.h"
 #include "core/interruption.h"
 
+#include "bodies/rigid_body.h"
 #include "contact/nodal_contact.h"
 #include "contact/penalty_contact.h"
 #include "contact/residual_location.h"
-#include "contact/rigid_body.h"
 #include "core/residual_history.h"
 #include "core/step_report.h"
 #include "core/tension_scale.h"

@@ -15,7 +15,7 @@ namespace tightfit {
 // How the first load step starts (the paper's Section 4.3).
 enum class Placement {
   // From the positions given to set_positions: for a tube, the garment already sewn round
-  // the body (contact/tube_placement.h). Fast: no seam has to close.
+  // the body (bodies/tube_placement.h). Fast: no seam has to close.
   sewn_tube,
   // The paper's start (Section 4.3, Figure 5): the panels unsewn, laid flat on opposite sides
   // of a cylinder body, pulled together by seam springs until the seams close; then welded.

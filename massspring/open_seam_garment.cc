@@ -1,7 +1,7 @@
 #include "massspring/open_seam_garment.h"
 
+#include "bodies/rigid_body.h"
 #include "contact/penalty_contact.h"
-#include "contact/rigid_body.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/stable_time_step.h"
 

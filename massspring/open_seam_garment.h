@@ -6,7 +6,7 @@
 // the dressing of a body, Dressing) drive it.
 #pragma once
 
-#include "contact/rigid_body.h"
+#include "bodies/rigid_body.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
 #include "massspring/bending_hinges.h"
@@ -35,7 +35,7 @@ class OpenSeamGarment {
   void body_moved(double bound_m);
   // A particle found g outside the body stays outside while it moves less than this times g
   // (1 for a true distance; a body scaled about an axis by s, whose distance is carried over
-  // from the unscaled one, needs s: contact/scaled_body.h).
+  // from the unscaled one, needs s: bodies/scaled_body.h).
   void set_clearance_factor(double factor) { clearance_factor_ = factor; }
   // Scales every seam spring's stiffness: `fraction` of the full one (a ramp), dimensionless.
   void set_seam_fraction(double fraction);

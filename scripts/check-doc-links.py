@@ -6,7 +6,7 @@ Usage: scripts/check-doc-links.py [REPOSITORY_ROOT]
 Checked, in the text and in the code blocks alike:
 - relative Markdown links and images, `[text](target)` and `![alt](target)`: the file exists
   (relative to the page), and an `#anchor` names a heading of the target page;
-- file paths cited in the text (`cases/cylinder_T.prm`, `contact/mesh_body.h`, `docs/model.md`,
+- file paths cited in the text (`cases/cylinder_T.prm`, `bodies/mesh_body.h`, `docs/model.md`,
   `scripts/test.sh`, ...): they exist in the repository; a bare page name (`parameters.md`)
   exists beside the page or in docs/;
 - cited sections, `docs/model.md, "Friction"` or `[model.md](model.md), "Friction"`: the page
@@ -21,7 +21,7 @@ import pathlib
 import re
 import sys
 
-SOURCE_FOLDERS = ("app", "bench", "cases", "contact", "core", "data", "docs", "fem", "fuzz",
+SOURCE_FOLDERS = ("app", "bench", "bodies", "body", "cases", "contact", "core", "data", "docs", "fem", "fuzz",
                   "instruments", "io", "massspring", "pattern", "scripts", "tests")
 CODE_SUFFIXES = (".h", ".cc", ".sh", ".py", ".txt", ".prm", ".cmake")
 

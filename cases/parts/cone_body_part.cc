@@ -1,9 +1,9 @@
-// Body/Kind = cone: a rigid solid circular cone (a limb that tapers; contact/cone.h). Its morph
+// Body/Kind = cone: a rigid solid circular cone (a limb that tapers; bodies/cone.h). Its morph
 // parameter alpha scales every distance from the axis about the apex (the cone grows as the
 // paper's cylinder does); alpha = 1 is the cone as given, and a case with Final alpha = 1 has
 // only the settling step.
+#include "bodies/cone.h"
 #include "cases/parts/part_entries.h"
-#include "contact/cone.h"
 
 #include <cstdio>
 #include <stdexcept>

@@ -3,8 +3,8 @@
 // circumference over 2 pi), or the initial radius when the garment is not a tube.
 #pragma once
 
+#include "bodies/cylinder.h"
 #include "cases/scenario_body.h"
-#include "contact/cylinder.h"
 
 #include <string>
 

@@ -1,14 +1,14 @@
 // Placement/Kind = dressing: the garment's panels, unsewn, wrapped on an elliptic cylinder round
-// an axis outside the body (contact/panel_wrap.h), then sewn onto the body by the dressing stage
+// an axis outside the body (bodies/panel_wrap.h), then sewn onto the body by the dressing stage
 // (massspring/dressing.h): seam springs close the seams while the body grows from a shrunk
 // start to its shape; the welded garment is the start of the load steps, on either backend
 // (docs/dressing.md).
+#include "bodies/panel_wrap.h"
+#include "bodies/surface_return.h"
 #include "cases/coarse_dressing.h"
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "contact/panel_wrap.h"
-#include "contact/surface_return.h"
 #include "core/mesh_transfer.h"
 #include "massspring/dressing.h"
 #include "massspring/massspring_backend.h"

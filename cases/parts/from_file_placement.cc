@@ -3,9 +3,9 @@
 // garment and mesh settings): its points are taken as this case's start, so that a state one
 // backend reached (a dressed and settled top) starts the other (docs/cases.md "Starting from a
 // previous run").
+#include "bodies/surface_return.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "contact/surface_return.h"
 #include "io/triangle_vtu_reader.h"
 
 #include <sstream>

@@ -1,5 +1,5 @@
 // Body/Kind = mesh: a rigid body read from a closed triangle or quad mesh (OBJ, STL, PLY; a
-// scanned or modelled limb or torso; contact/mesh_body.h). It does not change between load
+// scanned or modelled limb or torso; bodies/mesh_body.h). It does not change between load
 // steps: alpha is ignored.
 #include "body/body_size.h"
 #include "cases/parts/mesh_body_settings.h"

@@ -2,8 +2,8 @@
 // it gives): the file and how it is brought into tightfit's frame (docs/bodies.md).
 #pragma once
 
+#include "bodies/mesh_body.h"
 #include "cases/parameter_tree.h"
-#include "contact/mesh_body.h"
 
 #include <string>
 

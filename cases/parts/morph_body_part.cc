@@ -1,11 +1,11 @@
 // Body/Kind = morph: the mesh of Body/Mesh changing between load steps
-// (contact/morphing_mesh_body.h). With a target mesh of the same connectivity (MakeHuman's
+// (bodies/morphing_mesh_body.h). With a target mesh of the same connectivity (MakeHuman's
 // default female and male share theirs) alpha is the blend t: the garment settles on the base
 // (t = 0) and each load step moves the body towards the target, which it reaches at alpha = 1.
 // Without one, alpha is a scale about a point or an axis, from 1 (the body as read).
+#include "bodies/morphing_mesh_body.h"
 #include "cases/parts/mesh_body_settings.h"
 #include "cases/parts/part_entries.h"
-#include "contact/morphing_mesh_body.h"
 
 #include <cstdio>
 #include <stdexcept>

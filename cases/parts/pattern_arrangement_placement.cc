@@ -4,12 +4,12 @@
 // sewn onto the body by the dressing stage (massspring/dressing.h) while the body grows back
 // from a start shrunk about its skeleton, each part about its own axis (docs/arrangement.md
 // "Arrangement from the pattern file").
+#include "bodies/mesh_import.h"
+#include "bodies/polygon_mesh.h"
 #include "body/garment_arrangement.h"
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "contact/mesh_import.h"
-#include "contact/polygon_mesh.h"
 #include "massspring/dressing.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Body/Kind = plane: a rigid half-space (a floor, a table); load steps leave it as it is.
+#include "bodies/plane.h"
 #include "cases/parts/part_entries.h"
-#include "contact/plane.h"
 
 #include <cstdio>
 #include <stdexcept>

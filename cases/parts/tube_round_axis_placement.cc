@@ -2,9 +2,9 @@
 // an axis (a cone's, or one through a mesh body's limb or waist), its middle at a given point.
 // The radius must clear the body all round: a tube that starts inside the body stops the case
 // (the scenario's start check, cases/scenario.h).
+#include "bodies/tube_placement.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "contact/tube_placement.h"
 
 #include <stdexcept>
 

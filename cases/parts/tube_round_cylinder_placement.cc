@@ -1,10 +1,10 @@
 // Placement/Kind = tube round cylinder: the tube already sewn, as a circle coaxial with the
-// cylinder (contact/tube_placement.h), stress-free at its rest radius R0 when that is outside
+// cylinder (bodies/tube_placement.h), stress-free at its rest radius R0 when that is outside
 // the cylinder, else just outside the body.
+#include "bodies/tube_placement.h"
 #include "cases/parts/cylinder_body.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "contact/tube_placement.h"
 
 #include <algorithm>
 

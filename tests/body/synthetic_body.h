@@ -3,7 +3,7 @@
 // tightfit's frame (z up, front -y, left +x).
 #pragma once
 
-#include "contact/triangle_surface.h"
+#include "bodies/triangle_surface.h"
 
 #include <vector>
 

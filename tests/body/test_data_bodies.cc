@@ -1,9 +1,9 @@
 // The bodies of data/bodies measured against numbers from outside tightfit: GarmentCode's own
 // measurements of its mean male (garmentcode_mean_male.yaml, cm) and the girths the stocking
 // case was built from on MakeHuman's default female (docs/stocking.md).
+#include "bodies/mesh_import.h"
+#include "bodies/polygon_mesh.h"
 #include "body/body_measurements.h"
-#include "contact/mesh_import.h"
-#include "contact/polygon_mesh.h"
 
 #include <gtest/gtest.h>
 

@@ -4,12 +4,12 @@
 // two trouser legs, each tube two flat panels placed in front of and behind its body part as a
 // pattern file's arrangement places them. Every panel starts outside the body shrunk about its
 // skeleton; the dressing closes every seam; each sleeve ends round its own arm.
+#include "bodies/skeleton_shrink.h"
+#include "bodies/skeleton_shrunk_body.h"
 #include "body/anatomical_regions.h"
 #include "body/body_measurements.h"
 #include "body/garment_arrangement.h"
 #include "contact/penalty_contact.h"
-#include "contact/skeleton_shrink.h"
-#include "contact/skeleton_shrunk_body.h"
 #include "core/material.h"
 #include "core/rectangle_panel.h"
 #include "massspring/dressing.h"

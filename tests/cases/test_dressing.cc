@@ -4,12 +4,12 @@
 // steps give the pressure of the tube started sewn (the same equilibrium) and the closed form
 // p = T / r (docs/model.md, "Closed forms"). A garment far too small for its body cannot close
 // its seams: the dressing fails naming the seam, the gap and where.
+#include "bodies/cylinder.h"
+#include "bodies/scaled_body.h"
 #include "body_case.h"
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_run.h"
-#include "contact/cylinder.h"
-#include "contact/scaled_body.h"
 #include "cylinder_start.h"
 #include "io/triangle_vtu_reader.h"
 #include "massspring/seam_springs.h"

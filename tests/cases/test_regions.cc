@@ -2,11 +2,11 @@
 // its errors, named regions built on a body, and on the paper's garment T on a growing cylinder
 // (uniform pressure), a slab across the middle of the tube reading the closed-form pressure and the
 // contact area 2 pi r h.
+#include "bodies/mesh_import.h"
+#include "bodies/polygon_mesh.h"
 #include "body/body_measurements.h"
 #include "cases/body_region.h"
 #include "cases/region_pressure.h"
-#include "contact/mesh_import.h"
-#include "contact/polygon_mesh.h"
 #include "garment_t_run.h"
 
 #include <gtest/gtest.h>

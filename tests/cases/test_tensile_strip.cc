@@ -4,8 +4,8 @@
 // the pull and leave them free across it, and the grip's reaction per unit rest width is the
 // measured force. The strip is kept flat (every vertex held along z) and one corner is held
 // across the pull against rigid motion; nothing else touches it.
+#include "bodies/plane.h"
 #include "cases/case_parameters.h"
-#include "contact/plane.h"
 #include "core/constrained_directions.h"
 #include "core/garment.h"
 #include "core/rectangle_panel.h"

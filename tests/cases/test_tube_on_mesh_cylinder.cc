@@ -11,10 +11,10 @@
 // the body has faces). For Eq. 7, p = Y (1 - 1/alpha) / R0, d ln p / d ln alpha = 1 / (alpha - 1),
 // so the mesh reads low by between (1/3) and (2/3) of s / rho / (alpha - 1): never high, never
 // more than s / rho / (alpha - 1). That is the faceted contact surface; the smooth one (the
-// default, contact/blended_quadric_field.h) lies within a few micrometres of the true cylinder
+// default, bodies/blended_quadric_field.h) lies within a few micrometres of the true cylinder
 // (tests/contact/test_smooth_contact_surface.cc), so its tube reads the cylinder's pressure.
 #include "tests/cases/body_case.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 // between the ends of the major and of the minor axis, (a/b)^3 = 3.375.
 #include "cases/cylinder_theory.h"
 #include "tests/cases/body_case.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <Eigen/Geometry>
 

@@ -1,13 +1,13 @@
 // Coulomb friction: sticking below mu N, slipping at exactly mu N against the slip, the
 // consistent tangent against finite differences, and anchors that a growing or morphing body
 // carries with it.
-#include "body_mesh_files.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
+#include "bodies/morphing_mesh_body.h"
+#include "bodies/plane.h"
 #include "central_difference.h"
 #include "contact/coulomb_friction.h"
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
-#include "contact/morphing_mesh_body.h"
-#include "contact/plane.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // The augmented-Lagrangian contact of one vertex: its stiffness against finite differences of
 // its force, and its multiplier against the law of penalty_contact.h.
-#include "body_mesh_files.h"
+#include "bodies/cone.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
 #include "central_difference.h"
-#include "contact/cone.h"
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
 #include "contact/nodal_contact.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The penalty law: no force outside the body, k A0 d along the normal inside.
+#include "bodies/plane.h"
 #include "contact/penalty_contact.h"
-#include "contact/plane.h"
 
 #include <gtest/gtest.h>
 

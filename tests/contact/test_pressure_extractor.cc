@@ -73,8 +73,9 @@ TEST(PressureExtractor, BothDefinitionsReadTheUniformPressureAtEquilibrium) {
   const double p = 640.0;
   for (PressureDefinition definition :
        {PressureDefinition::contact_traction, PressureDefinition::garment_force}) {
-    const PressureField field = extract_pressure(
-        tube.triangles, pressed_state(tube, p), VertexAreaDefinition::barycentric, &body, definition);
+    const PressureField field =
+        extract_pressure(tube.triangles, pressed_state(tube, p), VertexAreaDefinition::barycentric,
+                         &body, definition);
     EXPECT_EQ(field.definition, definition);
     for (int v = 0; v < tube.n_vertices(); ++v) {
       EXPECT_NEAR(field.pressure_Pa[v], p, 1e-9 * p) << to_string(definition) << ", vertex " << v;
@@ -98,8 +99,9 @@ TEST(PressureExtractor, ContactTractionSplitsTheContactForceIntoPressureAndFrict
   }
   const PressureField contact =
       extract_pressure(tube.triangles, state, VertexAreaDefinition::barycentric, &body);
-  const PressureField paper = extract_pressure(tube.triangles, state, VertexAreaDefinition::barycentric,
-                                               &body, PressureDefinition::garment_force);
+  const PressureField paper =
+      extract_pressure(tube.triangles, state, VertexAreaDefinition::barycentric, &body,
+                       PressureDefinition::garment_force);
   EXPECT_EQ(contact.definition, PressureDefinition::contact_traction);  // the default
   for (int v = 0; v < tube.n_vertices(); ++v) {
     EXPECT_NEAR(contact.pressure_Pa[v], p, 1e-9 * p);

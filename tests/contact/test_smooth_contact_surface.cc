@@ -1,11 +1,11 @@
 // The smooth contact surface of a mesh body (MeshBodyOptions::ContactSurface::smooth,
-// contact/blended_quadric_field.h) on a faceted cylinder: its gap against the true cylinder's,
+// bodies/blended_quadric_field.h) on a faceted cylinder: its gap against the true cylinder's,
 // its gradient and Hessian against finite differences of its own gap, the work of its contact
 // force round a closed loop (zero for a force that derives from an energy), and the surface
 // location's round trip.
-#include "body_mesh_files.h"
-#include "contact/mesh_body.h"
+#include "bodies/mesh_body.h"
 #include "contact/penalty_contact.h"
+#include "tests/bodies/body_mesh_files.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // (fem/contact_set_prediction.h): the unclipped penalty force, and friction on the branch the
 // step predicts, against their closed forms, with their tangents against central finite
 // differences.
+#include "bodies/cylinder.h"
 #include "central_difference.h"
-#include "contact/cylinder.h"
 #include "contact/nodal_contact.h"
 #include "fem/contact_set_prediction.h"
 

@@ -4,15 +4,15 @@
 // central finite differences, on the sticking and the slipping branch, at random states; first one
 // node at a time on three bodies, then the whole assembled Newton tangent of a tube that friction
 // holds partly on a growing cylinder (docs/backends.md, "Friction").
+#include "bodies/cone.h"
+#include "bodies/cylinder.h"
+#include "bodies/mesh_body.h"
 #include "central_difference.h"
-#include "contact/cone.h"
-#include "contact/cylinder.h"
-#include "contact/mesh_body.h"
 #include "contact/penalty_contact.h"
 #include "fem/contact_set_prediction.h"
 #include "fem/fem_backend.h"
 #include "residual_jacobian.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 #include "tube_problem.h"
 
 #include <gtest/gtest.h>

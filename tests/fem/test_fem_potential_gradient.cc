@@ -4,9 +4,9 @@
 // is that gradient; and on a faceted cylinder, where the contact force takes the body's smooth
 // normal and the potential the flat faces' distance, the gap between the two against
 // FemBackend::potential_defect_N, the closed form of that difference.
-#include "contact/mesh_body.h"
+#include "bodies/mesh_body.h"
 #include "fem/fem_backend.h"
-#include "tests/contact/body_mesh_files.h"
+#include "tests/bodies/body_mesh_files.h"
 #include "tube_problem.h"
 
 #include <gtest/gtest.h>

@@ -4,9 +4,9 @@
 // friction all of them. A pin set is right when it stops each known free motion (the matrix
 // of its directions against those motions has full rank) and there are exactly as many
 // directions as free motions (no force-bearing motion is pinned).
-#include "contact/cone.h"
-#include "contact/cylinder.h"
-#include "contact/plane.h"
+#include "bodies/cone.h"
+#include "bodies/cylinder.h"
+#include "bodies/plane.h"
 #include "fem/rigid_motion_pin.h"
 
 #include <gtest/gtest.h>

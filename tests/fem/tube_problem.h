@@ -2,10 +2,10 @@
 // cylinder (axis z through the origin), with the closed forms of cases/cylinder_theory.h.
 #pragma once
 
+#include "bodies/cylinder.h"
+#include "bodies/tube_placement.h"
 #include "cases/cylinder_theory.h"
-#include "contact/cylinder.h"
 #include "contact/pressure_extractor.h"
-#include "contact/tube_placement.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
 #include "core/material.h"

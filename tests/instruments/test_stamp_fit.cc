@@ -2,8 +2,8 @@
 // deformation F = R diag(l1, l2) Q^T gives back l1, l2 and the grain angle of Q; a sheet
 // wrapped round a cylinder without stretch reads stretch 1 and, with the law's stresses,
 // Eq. 3 reads the hoop tension over the radius.
-#include "contact/cylinder.h"
-#include "contact/plane.h"
+#include "bodies/cylinder.h"
+#include "bodies/plane.h"
 #include "core/garment.h"
 #include "core/rectangle_panel.h"
 #include "instruments/eq3_pressure.h"

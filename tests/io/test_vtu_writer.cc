@@ -1,5 +1,5 @@
 // VTU files read back with VTK's own reader: every named array, its values, the field data.
-#include "contact/cylinder.h"
+#include "bodies/cylinder.h"
 #include "io/vtu_writer.h"
 #include "scratch_dir.h"
 

@@ -3,8 +3,8 @@
 // m g'' + c g' + kA g = -F does, with c = 2 zeta sqrt(kA m); the damper leaves the stable
 // state of a tube on a cylinder where it was (it acts on velocities only) and a slide along
 // the body undamped.
+#include "bodies/plane.h"
 #include "contact/penalty_contact.h"
-#include "contact/plane.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_backend.h"
 #include "massspring/stable_time_step.h"

@@ -2,7 +2,7 @@
 // flat on opposite sides of the cylinder, pulled round it by seam springs, then welded. It must
 // end where the sewn-tube start ends: the same mean pressure (to what the two stop rules leave)
 // and spread, closed seams, and no vertex deeper in the cylinder than the gap tolerance.
-#include "contact/plane.h"
+#include "bodies/plane.h"
 #include "contact/pressure_extractor.h"
 #include "massspring/flat_panel_start.h"
 #include "tube_on_cylinder.h"

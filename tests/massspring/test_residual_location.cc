@@ -1,7 +1,7 @@
 // Where a step's residual sits (contact/residual_location.h): the largest residual's vertex,
 // its normal and tangential parts to the body, the garment's net force and the rms, against
 // values worked out by hand for a plane body.
-#include "contact/plane.h"
+#include "bodies/plane.h"
 #include "contact/residual_location.h"
 
 #include <gtest/gtest.h>

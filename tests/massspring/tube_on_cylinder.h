@@ -2,9 +2,9 @@
 // cylinder along z, linear Biot with zero Poisson ratio, free ends, no gravity.
 #pragma once
 
-#include "contact/cylinder.h"
+#include "bodies/cylinder.h"
+#include "bodies/tube_placement.h"
 #include "contact/penalty_contact.h"
-#include "contact/tube_placement.h"
 #include "core/tube_garment.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/massspring_backend.h"

@@ -1,0 +1,278 @@
+#include "bodies/blended_quadric_field.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tightfit {
+namespace {
+
+// A unit vector normal to n.
+Vec3 any_normal_to(const Vec3& n) {
+  const Vec3 axis = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+  return (axis - axis.dot(n) * n).normalized();
+}
+
+// One vertex's quadric and weight at x.
+// The Hessian of w is alpha I + beta delta delta^T (delta = x - p_i), plus `turned`'s matrix
+// for a vertex the facing factor scales (index into the query's list of them, or -1).
+struct Term {
+  int vertex;
+  int turned;
+  double w;
+  double d;
+  double alpha, beta;
+  Vec3 delta;
+  Vec3 dw;  // grad w
+  Vec3 dd;  // grad d = n + K (x - p)
+};
+
+}  // namespace
+
+void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
+                                const std::vector<Triangle>& triangles,
+                                const std::vector<Vec3>& vertex_normals) {
+  p_ = vertices_m;
+  n_ = vertex_normals;
+  const int n = static_cast<int>(p_.size());
+  std::vector<std::vector<int>> around(n);
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      around[t[k]].push_back(t[(k + 1) % 3]);
+      around[t[k]].push_back(t[(k + 2) % 3]);
+    }
+  support_m_.assign(n, 0.0);
+  reach_.assign(n, Reach{});
+  curvature_.assign(n, Mat3::Zero());
+  for (int i = 0; i < n; ++i) {
+    std::vector<int>& ring = around[i];
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    // The osculating quadric through the neighbours: n . e = -(a^2 k11 + 2 a b k12 + b^2 k22)/2
+    // with (a, b) the edge's tangential coordinates; least squares over the ring.
+    const Vec3 t1 = any_normal_to(n_[i]), t2 = n_[i].cross(t1);
+    Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
+    Vec3 right = Vec3::Zero();
+    double longest = 0.0;
+    for (int j : ring) {
+      const Vec3 e = p_[j] - p_[i];
+      longest = std::max(longest, e.norm());
+      const double a = e.dot(t1), b = e.dot(t2);
+      const Vec3 row(a * a, 2 * a * b, b * b);
+      normal_matrix += row * row.transpose();
+      right += row * (-2.0 * e.dot(n_[i]));
+    }
+    support_m_[i] = support_over_longest_edge * longest;
+    reach_[i] = {p_[i], (1.0 + 1e-9) * support_m_[i] * support_m_[i]};
+    // A ring too thin to fix all three (collinear neighbours) keeps the least-norm part: the
+    // small ridge only matters in a direction no neighbour measures.
+    normal_matrix += 1e-12 * (normal_matrix.trace() + 1e-300) * Mat3::Identity();
+    const Vec3 k = normal_matrix.ldlt().solve(right);
+    curvature_[i] = k[0] * t1 * t1.transpose() +
+                    k[1] * (t1 * t2.transpose() + t2 * t1.transpose()) + k[2] * t2 * t2.transpose();
+  }
+  build_grid();
+  shift_m_.assign(n, 0.0);
+  std::vector<double> misfit(n, 0.0);
+  for (int sweep = 0; sweep < interpolation_sweeps; ++sweep) {
+    for (int j = 0; j < n; ++j) misfit[j] = evaluate(p_[j], n_[j], Mat3::Zero()).phi_m;
+    for (int j = 0; j < n; ++j) shift_m_[j] -= misfit[j];
+  }
+}
+
+void BlendedQuadricField::build_grid() {
+  const int n = static_cast<int>(p_.size());
+  cell_start_.assign(1, 0);
+  cell_vertices_.clear();
+  cells_ = {0, 0, 0};
+  if (n == 0) return;
+  // The grid spans the vertices' support balls. Cells of the median support keep a cell's
+  // list to two to three times the vertices that add to a point in it (on the MakeHuman
+  // female: 27 of 61 with cells half that size, for eight times the memory); a body whose
+  // bounding box would need more than 2^22 cells of that size gets larger ones.
+  Vec3 low = p_[0], high = p_[0];
+  for (int i = 0; i < n; ++i) {
+    low = low.cwiseMin(p_[i] - Vec3::Constant(support_m_[i]));
+    high = high.cwiseMax(p_[i] + Vec3::Constant(support_m_[i]));
+  }
+  std::vector<double> supports = support_m_;
+  std::nth_element(supports.begin(), supports.begin() + n / 2, supports.end());
+  const Vec3 extent = high - low;
+  cell_m_ = std::max(supports[n / 2], 1e-12);
+  constexpr double most_cells = 4194304.0;
+  while ((std::floor(extent.x() / cell_m_) + 1) * (std::floor(extent.y() / cell_m_) + 1) *
+             (std::floor(extent.z() / cell_m_) + 1) >
+         most_cells)
+    cell_m_ *= 1.25;
+  grid_origin_m_ = low;
+  for (int k = 0; k < 3; ++k) cells_[k] = static_cast<int>(std::floor(extent[k] / cell_m_)) + 1;
+  // Each vertex goes into every cell its ball meets (the cell's nearest point to p_i within
+  // s_i, with the same margin as reach_), counted first, then filled in vertex
+  // order, so that a cell sums its quadrics in one fixed order.
+  const auto for_each_cell_of = [&](int i, auto&& visit) {
+    const Vec3 relative = p_[i] - grid_origin_m_;
+    std::array<int, 3> first, last;
+    for (int k = 0; k < 3; ++k) {
+      first[k] = std::max(0, static_cast<int>(std::floor((relative[k] - support_m_[i]) / cell_m_)));
+      last[k] = std::min(cells_[k] - 1,
+                         static_cast<int>(std::floor((relative[k] + support_m_[i]) / cell_m_)));
+    }
+    for (int c = first[2]; c <= last[2]; ++c)
+      for (int b = first[1]; b <= last[1]; ++b)
+        for (int a = first[0]; a <= last[0]; ++a) {
+          const Vec3 corner = Vec3(a, b, c) * cell_m_;
+          const Vec3 nearest = relative.cwiseMax(corner).cwiseMin(corner + Vec3::Constant(cell_m_));
+          if ((relative - nearest).squaredNorm() <= reach_[i].beyond_squared_m2)
+            visit(a + cells_[0] * (b + cells_[1] * c));
+        }
+  };
+  const std::size_t cell_count = std::size_t(cells_[0]) * cells_[1] * cells_[2];
+  cell_start_.assign(cell_count + 1, 0);
+  for (int i = 0; i < n; ++i) for_each_cell_of(i, [&](int cell) { ++cell_start_[cell + 1]; });
+  for (std::size_t c = 0; c < cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_vertices_.resize(cell_start_[cell_count]);
+  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (int i = 0; i < n; ++i)
+    for_each_cell_of(i, [&](int cell) { cell_vertices_[fill[cell]++] = i; });
+}
+
+void BlendedQuadricField::vertices_near(const Vec3& x, double radius_m,
+                                        std::vector<int>& vertices) const {
+  vertices.clear();
+  if (cells_[0] == 0) return;
+  // The cells the ball's box meets hold every vertex whose support reaches into the ball.
+  const Vec3 relative = (x - grid_origin_m_) / cell_m_;
+  const double r_cells = radius_m / cell_m_;
+  std::array<int, 3> first, last;
+  for (int k = 0; k < 3; ++k) {
+    const double low = std::floor(relative[k] - r_cells), high = std::floor(relative[k] + r_cells);
+    if (!(high >= 0.0 && low < cells_[k])) return;  // the ball misses the grid (or x is NaN)
+    first[k] = static_cast<int>(std::max(0.0, low));
+    last[k] = static_cast<int>(std::min(double(cells_[k] - 1), high));
+  }
+  for (int c = first[2]; c <= last[2]; ++c)
+    for (int b = first[1]; b <= last[1]; ++b)
+      for (int a = first[0]; a <= last[0]; ++a) {
+        const int cell = a + cells_[0] * (b + cells_[1] * c);
+        for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+          const int i = cell_vertices_[k];
+          // Within s_i (1 + 1e-9) + radius of x, as the scan's test below (its margin, and a
+          // nanometre for round-off).
+          const double reach = std::sqrt(reach_[i].beyond_squared_m2) + radius_m + 1e-9;
+          if ((x - reach_[i].centre_m).squaredNorm() <= reach * reach) vertices.push_back(i);
+        }
+      }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+}
+
+BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m,
+                                                         const Mat3& dm_dx,
+                                                         const std::vector<int>* candidates) const {
+  thread_local std::vector<Term> terms_storage;
+  thread_local std::vector<Mat3> turned_storage;
+  std::vector<Term>& terms = terms_storage;
+  std::vector<Mat3>& turned = turned_storage;
+  terms.clear();
+  turned.clear();
+  // The cell holding x; outside the grid no support reaches x.
+  const Vec3 relative = (x - grid_origin_m_) / cell_m_;
+  std::array<int, 3> at;
+  for (int k = 0; k < 3; ++k) {
+    if (!(relative[k] >= 0.0 && relative[k] < cells_[k])) return Value{};
+    at[k] = std::min(cells_[k] - 1, static_cast<int>(relative[k]));
+  }
+  const int cell = at[0] + cells_[0] * (at[1] + cells_[1] * at[2]);
+  const Reach* const reach = reach_.data();
+  const int* listed = cell_vertices_.data() + cell_start_[cell];
+  const int* listed_end = cell_vertices_.data() + cell_start_[cell + 1];
+  if (candidates) listed = candidates->data(), listed_end = listed + candidates->size();
+  for (; listed != listed_end; ++listed) {
+    const int i = *listed;
+    const Vec3 delta = x - reach[i].centre_m;
+    // Most vertices of the cell's list lie beyond their support of x: their squared distance
+    // tells so without the root and the division (a margin of 1e-9 keeps the test below exact).
+    if (delta.squaredNorm() > reach[i].beyond_squared_m2) continue;
+    const double s = support_m_[i], distance = delta.norm(), r = distance / s;
+    // The facing factor: S((n_i . m + 1/2) / (1/2)), S the quintic smoothstep.
+    const double a = 2.0 * (n_[i].dot(m) + 0.5);
+    if (!(r < 1.0 && a > 0.0)) continue;
+    // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
+    // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
+    const double u = 1.0 - r;
+    Term t;
+    t.vertex = i;
+    t.turned = -1;
+    t.delta = delta;
+    t.w = u * u * u * u * (4 * r + 1);
+    const double over_s2 = 1.0 / (s * s);
+    t.alpha = -20.0 * over_s2 * u * u * u;
+    t.dw = t.alpha * delta;
+    t.beta = distance > 0 ? 60.0 * over_s2 * u * u / (distance * s) : 0.0;
+    if (a < 1.0) {
+      // w <- w S(a): grad (w S) = S grad w + w S' grad a, grad a = 2 (dm/dx)^T n_i; its
+      // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T, the
+      // second derivative of m left out (it only acts where S is between 0 and 1, on vertices
+      // turned 90 to 120 degrees away, far out in the blend).
+      const double S = a * a * a * (10 - 15 * a + 6 * a * a);
+      const double dS = 30 * a * a * (1 - a) * (1 - a), d2S = 60 * a * (1 - a) * (1 - 2 * a);
+      const Vec3 da = 2.0 * dm_dx.transpose() * n_[i];
+      t.turned = static_cast<int>(turned.size());
+      turned.push_back(dS * (t.dw * da.transpose() + da * t.dw.transpose()) +
+                       t.w * d2S * da * da.transpose());
+      t.alpha *= S;
+      t.beta *= S;
+      t.dw = S * t.dw + t.w * dS * da;
+      t.w *= S;
+    }
+    const Vec3 curved = curvature_[i] * delta;
+    t.d = n_[i].dot(delta) + 0.5 * delta.dot(curved) + shift_m_[i];
+    t.dd = n_[i] + curved;
+    terms.push_back(t);
+  }
+  Value v;
+  double weighted = 0.0;
+  for (const Term& t : terms) {
+    v.weight_sum += t.w;
+    v.weight_gradient_per_m += t.dw;
+    weighted += t.w * t.d;
+  }
+  if (!(v.weight_sum > 0)) return v;
+  const double W = v.weight_sum;
+  v.phi_m = weighted / W;
+  // grad phi = sum [w_i grad d_i + (d_i - phi) grad w_i] / W.
+  for (const Term& t : terms) v.gradient += (t.w * t.dd + (t.d - v.phi_m) * t.dw) / W;
+  // From W phi = S differentiated twice:
+  // H phi = sum [(d_i - phi) H w_i + grad w_i (grad d_i - grad phi)^T
+  //              + (grad d_i - grad phi) grad w_i^T + w_i K_i] / W,
+  // summed in its six distinct entries (every term is symmetric), H w_i as Term says.
+  double h[6] = {0, 0, 0, 0, 0, 0};  // (0,0) (1,1) (2,2) (0,1) (0,2) (1,2)
+  double diagonal = 0.0;
+  for (const Term& t : terms) {
+    const double off = t.d - v.phi_m, c = off * t.beta;
+    const Vec3 e = t.dd - v.gradient;
+    const Vec3& q = t.delta;
+    const Vec3& g = t.dw;
+    const Mat3& K = curvature_[t.vertex];
+    diagonal += off * t.alpha;
+    h[0] += c * q[0] * q[0] + 2 * g[0] * e[0] + t.w * K(0, 0);
+    h[1] += c * q[1] * q[1] + 2 * g[1] * e[1] + t.w * K(1, 1);
+    h[2] += c * q[2] * q[2] + 2 * g[2] * e[2] + t.w * K(2, 2);
+    h[3] += c * q[0] * q[1] + g[0] * e[1] + e[0] * g[1] + t.w * K(0, 1);
+    h[4] += c * q[0] * q[2] + g[0] * e[2] + e[0] * g[2] + t.w * K(0, 2);
+    h[5] += c * q[1] * q[2] + g[1] * e[2] + e[1] * g[2] + t.w * K(1, 2);
+    if (t.turned >= 0) v.hessian_per_m += off * turned[t.turned];
+  }
+  Mat3& H = v.hessian_per_m;
+  H(0, 0) += h[0] + diagonal;
+  H(1, 1) += h[1] + diagonal;
+  H(2, 2) += h[2] + diagonal;
+  H(0, 1) += h[3], H(1, 0) += h[3];
+  H(0, 2) += h[4], H(2, 0) += h[4];
+  H(1, 2) += h[5], H(2, 1) += h[5];
+  H /= W;
+  return v;
+}
+
+}  // namespace tightfit
