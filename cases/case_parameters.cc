@@ -193,7 +193,8 @@ void declare_constraints(ParameterHandler& prm) {
                     "sheet's: bottom, top, left, right; 'all': every vertex) that keep their "
                     "coordinate along Held direction. 'bottom, top' on a tube: the paper's held "
                     "ends (axial stretch 1); 'all' on a stocking: the knit gripped along the "
-                    "leg, free round it; empty: free ends.");
+                    "leg, and its mean turn round the direction held too (docs/backends.md, "
+                    "\"The held turn\"); empty: free ends.");
   prm.declare_entry("Held direction", "axis", Patterns::Anything(),
                     "Direction the held groups may not move along: 'axis' for the axis a "
                     "garment cut to the body was cut along (Garment/Kind = limb tube: the "

@@ -52,6 +52,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   mass_kg_ = lumped_masses_kg(mesh, problem_.fabric->areal_density_kg_per_m2);
   rest_vertex_area_m2_ = rest_vertex_areas_m2(mesh);
   constrained_ = ConstrainedDirections(problem_.constraints, n);
+  held_turn_ = HeldTurn(problem_.constraints, n);
   size_m_ = std::sqrt(rest_area(mesh));
   // Stop rule: a force relative to the tension scale Y h^2 / L (core/garment.h says why).
   tolerance_N_ =
@@ -224,6 +225,15 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     total_squared += squared;  // std::max drops NaN; a sum keeps it
     net_N += force[i];
   }
+  if (held_turn_.active()) {
+    // The held turn's reaction (core/held_turn.h) is part of the residual the rule reads.
+    held_turn_.remove_from_forces(x, mass_kg_, force);
+    largest_squared = total_squared = 0.0;
+    for (const Vec3& f : force) {
+      largest_squared = std::max(largest_squared, f.squaredNorm());
+      total_squared += f.squaredNorm();
+    }
+  }
   if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
   const double norm_N = parameters_.stop.norm == StopNorm::rms
                             ? std::sqrt(total_squared / double(n))
@@ -303,6 +313,7 @@ double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double
       stop_below_N);
   for (std::size_t i = 0; i < x_.size(); ++i)
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, v_[i]);
+  held_turn_.remove_from_velocities(x_, mass_kg_, v_);
   return residual;
 }
 

@@ -21,6 +21,7 @@
 #include "contact/friction_anchors.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
+#include "core/held_turn.h"
 #include "core/load_step.h"
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
@@ -108,6 +109,7 @@ class MassSpringBackend final : public Backend {
   std::vector<double> mass_kg_;
   std::vector<double> rest_vertex_area_m2_;
   ConstrainedDirections constrained_;
+  HeldTurn held_turn_;  // every vertex held along one direction: the mean turn about it too
   double tolerance_N_ = 0.0;
   double net_force_limit_N_ = 0.0;  // 0: the stop rule does not read the net force
   double size_m_ = 0.0;             // the garment's rest size, sqrt(rest area)
