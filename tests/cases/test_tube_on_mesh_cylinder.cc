@@ -13,8 +13,8 @@
 // more than s / rho / (alpha - 1). That is the faceted contact surface; the smooth one (the
 // default, bodies/blended_quadric_field.h) lies within a few micrometres of the true cylinder
 // (tests/contact/test_smooth_contact_surface.cc), so its tube reads the cylinder's pressure.
-#include "tests/cases/body_case.h"
 #include "tests/bodies/body_mesh_files.h"
+#include "tests/cases/body_case.h"
 
 #include <cmath>
 

@@ -4,8 +4,8 @@
 // whose frictionless tube of uniform tension presses p = T kappa: the curvature's ratio
 // between the ends of the major and of the minor axis, (a/b)^3 = 3.375.
 #include "cases/cylinder_theory.h"
-#include "tests/cases/body_case.h"
 #include "tests/bodies/body_mesh_files.h"
+#include "tests/cases/body_case.h"
 
 #include <Eigen/Geometry>
 
