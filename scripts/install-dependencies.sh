@@ -65,7 +65,7 @@ if [ ${#missing[@]} -eq 0 ]; then
   echo "tightfit: every dependency is installed"
 else
   echo "tightfit: installing ${missing[*]}"
-  echo "tightfit: on a fresh Debian 12 that is about 780 packages (800 MB): a few minutes"
+  echo "tightfit: on a fresh Debian 12 that is about 780 packages (800 MB): a minute or more"
   "${as_root[@]}" apt-get update -qq
   # dpkg's unsafe-io skips the sync after each unpacked file: on a fresh machine it halves the
   # installation (docs/performance.md, "Building"); a crash during it would need the
