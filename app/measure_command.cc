@@ -11,6 +11,7 @@
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
 #include "cases/scenario_body.h"
+#include "core/closest_names.h"
 
 #include <filesystem>
 #include <ostream>
@@ -59,7 +60,8 @@ MeasureOptions parse(int argc, const char* const* argv) {
     } else if (a == "--set") {
       o.overrides.push_back(value());
     } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("measure: unknown option '" + a + "'");
+      throw UsageError("measure: unknown option '" + a + "'" +
+                       did_you_mean(a, {"--units", "--up", "--output", "--set"}));
     } else if (o.file.empty()) {
       o.file = a;
     } else {

@@ -1,5 +1,5 @@
 // The body query alone, per garment vertex, as the mass-spring backend asks it frame after
-// frame (docs/performance.md, "Body queries"): each vertex keeps its near faces
+// frame (docs/performance-bodies.md, "Body queries"): each vertex keeps its near faces
 // (RigidBody::query_near) and moves a little between frames. Bodies: the MakeHuman default
 // female (26756 triangles) and the same surface with every triangle split in four at its
 // edges' midpoints (107024 triangles), with the smooth contact surface that case files use

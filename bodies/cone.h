@@ -1,6 +1,6 @@
 // A rigid solid circular cone, semi-infinite: from its apex it widens along `axis` without end
 // (a limb segment that tapers: the garment only ever touches a band of it). Its distance,
-// normal and normal derivative are exact (docs/bodies.md "Cone").
+// normal and normal derivative are exact (docs/bodies.md "Body kinds").
 #pragma once
 
 #include "bodies/rigid_body.h"

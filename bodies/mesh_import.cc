@@ -1,4 +1,5 @@
 #include "bodies/mesh_import.h"
+#include "core/closest_names.h"
 
 #include <stdexcept>
 
@@ -14,7 +15,8 @@ Mat3 up_axis_rotation(const std::string& up) {
   if (up == "-y") return AngleAxisd(-M_PI / 2, Vec3::UnitX()).toRotationMatrix();
   if (up == "+x") return AngleAxisd(-M_PI / 2, Vec3::UnitY()).toRotationMatrix();
   if (up == "-x") return AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix();
-  throw std::invalid_argument("Body/Up axis: '" + up + "' is not one of +x, -x, +y, -y, +z, -z");
+  throw std::invalid_argument("Body/Up axis: '" + up + "' is not one of +x, -x, +y, -y, +z, -z" +
+                              did_you_mean(up, {"+x", "-x", "+y", "-y", "+z", "-z"}, 0));
 }
 
 }  // namespace

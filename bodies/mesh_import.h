@@ -1,6 +1,6 @@
 // How a body mesh file is brought into tightfit's frame (metres, +z up): unit scale, the
 // file's up axis, a rotation and a translation; quads are split into triangles
-// (docs/bodies.md "Import options").
+// (docs/bodies.md "Files and import options").
 #pragma once
 
 #include "bodies/polygon_mesh.h"

@@ -1,4 +1,5 @@
 #include "cases/body_region.h"
+#include "core/closest_names.h"
 #include "core/number_text.h"
 #include "core/plain_text.h"
 
@@ -80,6 +81,24 @@ std::string known_shapes() {
   return list;
 }
 
+// "; did you mean 'waist band'?" for a shape whose first words are close to a known one
+// ("waist bnd front", "bst", "slb z 0 1"): of the names near the first one, two or three words,
+// the one fewest edits away.
+std::string closest_shape(const std::vector<std::string>& words) {
+  std::vector<std::string> known{"slab", "box", "ball"};
+  for (const std::string& n : anatomical_region_names()) known.push_back(n);
+  std::string best, leading;
+  std::size_t fewest = std::string::npos;
+  for (std::size_t n = 0; n < words.size() && n < 3; ++n) {
+    leading += (n == 0 ? "" : " ") + words[n];
+    for (const std::string& name : closest_names(leading, known)) {
+      const std::size_t edits = edit_distance(leading, name);
+      if (edits < fewest) fewest = edits, best = name;
+    }
+  }
+  return best.empty() ? "" : "; did you mean '" + best + "'?";
+}
+
 // "under-bust band front 0.04", "B left": the longest known name the words start with, then a
 // side, a facing and a width, each optional.
 RegionShape parse_named_shape(const std::vector<std::string>& words, const std::string& text) {
@@ -100,13 +119,18 @@ RegionShape parse_named_shape(const std::vector<std::string>& words, const std::
   }
   if (used == 0)
     throw std::invalid_argument("unknown shape '" + words.front() + "' (known: " + known_shapes() +
-                                ")");
+                                ")" + closest_shape(words));
   for (std::size_t i = used; i < words.size(); ++i) {
     const std::string& w = words[i];
     if (w == "left" || w == "right") {
       s.named.side = w == "left" ? 0 : 1;
     } else if (w == "front" || w == "back") {
       s.named.facing = w == "front" ? 1 : -1;
+    } else if (!whole_number(w)) {
+      throw std::invalid_argument("'" + w + "' after '" + s.named.name +
+                                  "' is neither a side (left, right), a facing (front, back) nor a "
+                                  "width in m" +
+                                  did_you_mean(w, {"left", "right", "front", "back"}, 0));
     } else {
       s.named.width_m = number(w, "the width");
       if (!(s.named.width_m > 0))

@@ -291,7 +291,7 @@ void declare_output(ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-// The stop rule both backends read (core/load_step.h; docs/model.md, "Reaching equilibrium").
+// The stop rule both backends read (core/load_step.h; docs/backends.md, "Reaching equilibrium").
 // Its entries default to auto: on a body mesh touched on its flat faces (Body/Mesh/Contact
 // surface = faceted) the rms at 3e-3 and a gap of 1e-6 m, elsewhere the largest at 1e-4 and
 // 1e-8 m (docs/parameters.md; the faceted body's reasons in massspring/massspring_parameters.h).

@@ -1,4 +1,5 @@
 #include "cases/garment_arrangement.h"
+#include "core/closest_names.h"
 
 #include "core/plain_text.h"
 
@@ -116,7 +117,8 @@ std::map<std::string, std::string> parse_arrangement_parts(const std::vector<std
       std::string list;
       for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       throw std::invalid_argument("Body parts: '" + part + "' (panel '" + panel +
-                                  "') is no body part; one of " + list);
+                                  "') is no body part; one of " + list +
+                                  did_you_mean(part, known, 0));
     }
     parts[panel] = part;
   }
@@ -139,11 +141,12 @@ ArrangementPlan plan_arrangement(const Garment& garment, const BodyMeasurements&
                                  const ArrangementOptions& options) {
   const std::size_t n = garment.panels.size();
   if (n == 0) throw std::invalid_argument("the garment has no panels to arrange");
-  for (const auto& [panel, part] : options.parts) {
-    bool known = false;
-    for (const Panel& p : garment.panels) known = known || p.name == panel;
-    if (!known) throw std::invalid_argument("Body parts: the garment has no panel '" + panel + "'");
-  }
+  std::vector<std::string> panel_names;
+  for (const Panel& p : garment.panels) panel_names.push_back(p.name);
+  for (const auto& [panel, part] : options.parts)
+    if (std::find(panel_names.begin(), panel_names.end(), panel) == panel_names.end())
+      throw std::invalid_argument("Body parts: the garment has no panel '" + panel + "'" +
+                                  did_you_mean(panel, panel_names));
   ArrangementPlan plan;
   plan.panel_parts.resize(n);
   bool any = false;
@@ -321,8 +324,10 @@ double round_body_scale_for(const BodyEase& ease, const Garment& garment,
   try {
     body.girth(ease.line);
   } catch (const std::out_of_range&) {
-    throw std::invalid_argument("Ease against body: the body has no girth line '" + ease.line +
-                                "' (bust, under-bust, waist, hips)");
+    throw std::invalid_argument(
+        "Ease against body: the body has no girth line '" + ease.line +
+        "' (bust, under-bust, waist, hips)" +
+        did_you_mean(ease.line, {"bust", "under-bust", "waist", "hips"}, 0));
   }
   for (const EaseAtLine& at : ease_at_girth_lines(garment, plan, body))
     if (at.line == ease.line) return at.girth_m * (1.0 + ease.ease) / at.garment_m;

@@ -2,6 +2,7 @@
 
 #include "body/leg_measuring_points.h"
 #include "body/limb_sections.h"
+#include "core/closest_names.h"
 #include "core/number_text.h"
 #include "core/plain_text.h"
 
@@ -42,7 +43,8 @@ LimbTubeEnd parse_limb_tube_end(const std::string& text, const std::string& entr
   if (!is_point_name(end.point))
     throw std::invalid_argument(entry + " = '" + text + "': '" + end.point +
                                 "' is not a measuring point (" + point_names_joined() +
-                                "); expected POINT [+|- METRES], e.g. 'B - 0.02'");
+                                "); expected POINT [+|- METRES], e.g. 'B - 0.02'" +
+                                did_you_mean(end.point, leg_point_names(), 0));
   if (sign != std::string::npos) {
     const std::optional<double> offset = whole_number(trimmed(t.substr(sign + 1)));
     if (!offset || *offset < 0)
@@ -80,7 +82,8 @@ LimbTubeSpec parse_limb_tube_spec(const std::string& limb, const std::string& fr
                                   const std::string& negative_ease) {
   LimbTubeSpec spec;
   if (limb != "leg left" && limb != "leg right")
-    throw std::invalid_argument("Limb = '" + limb + "': expected 'leg left' or 'leg right'");
+    throw std::invalid_argument("Limb = '" + limb + "': expected 'leg left' or 'leg right'" +
+                                did_you_mean(limb, {"leg left", "leg right"}, 0));
   spec.side = limb == "leg left" ? 0 : 1;
   spec.from = parse_limb_tube_end(from, "From");
   spec.to = parse_limb_tube_end(to, "To");

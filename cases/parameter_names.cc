@@ -107,6 +107,17 @@ std::string DeclaredParameters::check_entry(const std::vector<std::string>& path
   // A subsection written as an entry, or an entry of another subsection nearby.
   std::vector<std::string> known = here->entries;
   known.insert(known.end(), here->subsections.begin(), here->subsections.end());
+  if (!closest_names(name, known).empty()) return message + did_you_mean(name, known);
+  // An entry written in the wrong subsection ("Final alpha" at the top level): where it is.
+  std::vector<std::string> elsewhere;
+  for (const auto& [at, other] : levels_)
+    for (const std::string& e : other.entries)
+      if (edit_distance(e, name) == 0) elsewhere.push_back(at.empty() ? e : at + "/" + e);
+  if (!elsewhere.empty()) {
+    std::string list;
+    for (const std::string& e : elsewhere) list += (list.empty() ? "'" : "' or '") + e;
+    return message + "; it is an entry of another subsection: did you mean " + list + "'?";
+  }
   return message + did_you_mean(name, known);
 }
 

@@ -1,4 +1,4 @@
-// The pressure extractor shared by both backends (docs/model.md, "Pressure").
+// The pressure extractor shared by both backends (docs/model.md, "The pressure extractor").
 //
 // At each vertex a normal force divided by the vertex area, p_v = F_v / A_v, in one of two
 // definitions:

@@ -1,5 +1,5 @@
 // Where a load step's residual sits, for the message of a step that cannot meet its stop rule
-// (docs/model.md, "Stalls"): the vertex holding the largest residual force, its split into the
+// (docs/backends.md, "Stalls"): the vertex holding the largest residual force, its split into the
 // parts along the body's outward normal and across it, and the net force on the whole garment.
 // A settle that drags on because the garment slides over the body shows a net force (the sum
 // of the residuals is the contact and gravity forces' sum: the internal forces cancel), a

@@ -1,4 +1,5 @@
 #include "core/constrained_directions.h"
+#include "core/closest_names.h"
 
 #include <stdexcept>
 #include <string>
@@ -20,10 +21,13 @@ std::vector<int> group_vertices(const SimulationMesh& mesh, const std::string& g
   const auto found = mesh.vertex_groups.find(group);
   if (found == mesh.vertex_groups.end()) {
     std::string known;
-    for (const auto& [name, vertices] : mesh.vertex_groups)
+    std::vector<std::string> names{"all"};
+    for (const auto& [name, vertices] : mesh.vertex_groups) {
       known += (known.empty() ? "" : ", ") + name;
-    throw std::invalid_argument("the garment has no vertex group '" + group +
-                                "' (it has: " + known + ", and all)");
+      names.push_back(name);
+    }
+    throw std::invalid_argument("the garment has no vertex group '" + group + "' (it has: " +
+                                known + ", and all)" + did_you_mean(group, names, 0));
   }
   return found->second;
 }

@@ -1,7 +1,7 @@
 // What both backends do round a load step, written once: the stop rule and the size of the
 // residual it reads, the secant predictor in alpha, and the contact multiplier (Uzawa) rounds
-// (docs/model.md, "Reaching equilibrium" and "Contact"). Each backend brings its own physics
-// and its own solver (RK4 frames or Newton's method) as the settle of one round.
+// (docs/backends.md, "Reaching equilibrium"; docs/model.md, "Contact"). Each backend brings its own
+// physics and its own solver (RK4 frames or Newton's method) as the settle of one round.
 #pragma once
 
 #include "core/step_report.h"

@@ -1,6 +1,6 @@
 // A pressure map on the garment's vertices, as the pressure extractor
 // (contact/pressure_extractor.h) makes it and the writers (io/) and measurements read it
-// (docs/model.md, "Pressure").
+// (docs/model.md, "The pressure extractor").
 #pragma once
 
 #include "core/mesh_geometry.h"

@@ -10,7 +10,7 @@
 
 namespace tightfit {
 
-// Which size of the residual force field the stop rule reads (docs/model.md, "Reaching
+// Which size of the residual force field the stop rule reads (docs/backends.md, "Reaching
 // equilibrium").
 enum class StopNorm {
   // The largest residual on any vertex (the mass-spring backend: its force vector; the FE

@@ -11,7 +11,7 @@ namespace tightfit {
 // amplitude e over the garment leaves about Y e h^2 / L on each vertex (the stress error's
 // gradient Y e / L times the vertex area h^2), so a tolerance of e times this bounds the
 // remaining strain error by about e on every mesh. Y h alone, the force of a strain e on one
-// edge, lets the smooth error grow like L / h as the mesh is refined (docs/model.md, "Reaching
+// edge, lets the smooth error grow like L / h as the mesh is refined (docs/backends.md, "Reaching
 // equilibrium").
 double tension_scale_N(const SimulationMesh& mesh, double stiffness_scale_N_per_m);
 // The same from the mesh's mean rest edge h and rest area L^2.

@@ -4,7 +4,7 @@
 // in contact off it) with no force against them: at the trial point the penalty kA (about 5e3
 // N/m on the tops) answers a millimetre's step with newtons of residual, and the line search
 // halves the step until only a few nodes cross. On the tops that was the whole of the linear
-// convergence (docs/performance.md, "Newton on the tops").
+// convergence (docs/performance-bodies.md, "Newton on the tops").
 //
 // The remedy is the primal-dual active-set view of the semismooth Newton step (Hintermueller,
 // Ito and Kunisch 2002): solve the step with each node's contact taken on the side of the kink

@@ -17,6 +17,35 @@ Vec3 seam_colour(int number) {
   return colours[(std::max(number, 1) - 1) % 8];
 }
 
+namespace {
+
+bool overlap(const PlacedLabel& a, const PlacedLabel& b, int font_px) {
+  const double half_widths = 0.3 * font_px * (a.text.size() + b.text.size());
+  return std::abs(a.x - b.x) < half_widths + 2 && std::abs(a.y - b.y) < font_px;
+}
+
+}  // namespace
+
+std::vector<PlacedLabel> labels_without_overlap(const std::vector<PlacedLabel>& labels,
+                                                int font_px) {
+  std::vector<PlacedLabel> kept;
+  for (PlacedLabel label : labels) {
+    const bool repeated = std::any_of(kept.begin(), kept.end(), [&](const PlacedLabel& k) {
+      return k.text == label.text && std::hypot(k.x - label.x, k.y - label.y) < 2.0 * font_px;
+    });
+    if (repeated) continue;
+    for (int moves = 0; moves < 8; ++moves) {
+      const bool clash = std::any_of(kept.begin(), kept.end(), [&](const PlacedLabel& k) {
+        return overlap(k, label, font_px);
+      });
+      if (!clash) break;
+      label.y += font_px;
+    }
+    kept.push_back(label);
+  }
+  return kept;
+}
+
 void write_outline_picture(const std::string& path, const OutlineDrawing& drawing, int width,
                            int height) {
   RasterCanvas canvas(width, height, Vec3(1, 1, 1));
@@ -69,6 +98,7 @@ void write_outline_picture(const std::string& path, const OutlineDrawing& drawin
       }
     if (b.x() >= a.x()) panel_middle[p] = 0.5 * (a + b), panel_size[p] = b - a;
   }
+  std::vector<PlacedLabel> placed;
   for (auto& [key, entry] : labels) {
     auto& [numbers, edge] = entry;
     if (edge->points_m.empty()) continue;
@@ -83,10 +113,11 @@ void write_outline_picture(const std::string& path, const OutlineDrawing& drawin
     inward = inward.norm() > 0 ? Vec2(inward.normalized()) : Vec2::Zero();
     const Vec3 at = to_screen(mid);
     // 22 px inside the panel; picture y runs downwards.
-    canvas.draw_text(text, static_cast<int>(std::lround(at.x() + 22 * inward.x())),
-                     static_cast<int>(std::lround(at.y() - 22 * inward.y() + 6)), 16,
-                     RasterCanvas::Align::centre);
+    placed.push_back({text, static_cast<int>(std::lround(at.x() + 22 * inward.x())),
+                      static_cast<int>(std::lround(at.y() - 22 * inward.y() + 6))});
   }
+  for (const PlacedLabel& label : labels_without_overlap(placed, 16))
+    canvas.draw_text(label.text, label.x, label.y, 16, RasterCanvas::Align::centre);
   // A name in the middle of its panel; below it, smaller, where the panel is narrower than the
   // name (a binding strip), every other one a line lower so that neighbours do not overlap.
   int below = 0;

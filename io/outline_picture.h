@@ -28,6 +28,19 @@ struct OutlineDrawing {
   std::string title;
 };
 
+// A seam label's text and where its baseline's centre is, in pixels (y downwards).
+struct PlacedLabel {
+  std::string text;
+  int x = 0, y = 0;
+};
+
+// The labels with none drawn twice or over another: a label whose text is already drawn less
+// than two font heights away is left out (a dart's two legs carry the same seam number, and a
+// narrow dart sets both labels side by side); one that would overlap a different label is moved
+// down a line until it does not. Widths are estimated as 0.6 font heights a character.
+std::vector<PlacedLabel> labels_without_overlap(const std::vector<PlacedLabel>& labels,
+                                                int font_px);
+
 // The colour seam `number` (from 1) is drawn in.
 Vec3 seam_colour(int number);
 

@@ -10,8 +10,12 @@ Checked, in the text and in the code blocks alike:
   `scripts/test.sh`, ...): they exist in the repository; a bare page name (`parameters.md`)
   exists beside the page or in docs/;
 - cited sections, `docs/model.md, "Friction"` or `[model.md](model.md), "Friction"`: the page
-  has a heading that starts with the quoted title.
-Also checked: every docs/ page that a comment in the code cites exists.
+  has a heading, or a paragraph with a bold run-in title (`**Stalls.**`), that starts with the
+  quoted title.
+- figure paths cited without a link (`figures/stocking_pressure_front.png`): the file exists
+  beside the page.
+Also checked: every docs/ page that a comment in the code cites exists, and a section it cites
+(`docs/model.md, "Friction"`, across a line break too) is a heading of that page.
 
 Not checked: web addresses, and paths under build/ and output/ (a run writes them). A path
 with a placeholder component (NNNN, CASE, DIR, ...) or a wildcard is skipped.
@@ -27,8 +31,10 @@ CODE_SUFFIXES = (".h", ".cc", ".sh", ".py", ".txt", ".prm", ".cmake")
 
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 PATH = re.compile(r"(?<![\w./-])((?:%s)/[A-Za-z0-9_.\-/]*[A-Za-z0-9_])" % "|".join(SOURCE_FOLDERS))
+FIGURE = re.compile(r"(?<![\w./-])(figures/[A-Za-z0-9_.\-]*[A-Za-z0-9_])")
 PAGE = re.compile(r"(?<![\w./-])([A-Za-z0-9_-]+\.md)\b")
 SECTION = re.compile(r"((?:docs/)?[A-Za-z0-9_-]+\.md)(?:\]\([^)]*\))?\)?,? \(?\"([^\"]+)\"")
+CODE_SECTION = re.compile(r"(docs/[A-Za-z0-9_-]+\.md),? \(?\"([^\"]+)\"")
 HEADING = re.compile(r"^#+\s+(.*?)\s*$")
 PLACEHOLDER = re.compile(r"^(?:[A-Z]+|N+|.*NNNN.*|.*\.\.\..*|.*[*<>{}].*)$")
 
@@ -50,6 +56,28 @@ def headings(page):
             if match:
                 titles.append(match.group(1))
     return titles
+
+
+BOLD_LEAD = re.compile(r"^(?:[-*] )?\*\*([^*]+?)\.?\*\*")
+
+
+def section_titles(page):
+    """What a cited section may name: a heading, or a paragraph's bold run-in title
+    (`**Stalls.** RK4 watches ...`); backticks dropped."""
+    titles, fenced = [], False
+    for line in page.read_text(encoding="utf-8").splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        elif not fenced:
+            match = HEADING.match(line) or BOLD_LEAD.match(line)
+            if match:
+                titles.append(match.group(1).replace("`", ""))
+    return titles
+
+
+def cited_section_found(page, title):
+    wanted = title.lstrip("# ").replace("`", "").strip().lower()
+    return any(t.lower().startswith(wanted) for t in section_titles(page))
 
 
 def has_placeholder(path):
@@ -94,6 +122,11 @@ def check_page(root, page, problems):
                 continue
             if not (root / path).exists():
                 problems.append(f"{where}:{number}: cites '{path}', which does not exist")
+        for figure in FIGURE.findall(line):
+            if has_placeholder(figure) or pathlib.Path(figure).name in reported:
+                continue
+            if not (page.parent / figure).exists():
+                problems.append(f"{where}:{number}: cites '{figure}', which does not exist")
         for name in set(PAGE.findall(line)) - reported:
             if not ((page.parent / name).exists() or (root / "docs" / name).exists()
                     or (root / name).exists()):
@@ -115,17 +148,22 @@ def check_page(root, page, problems):
             target = root / "docs" / name
         if not target.exists():
             continue  # reported above
-        wanted = title.lstrip("# ").strip().lower()
-        if not any(t.lower().startswith(wanted) for t in titles_of(target)):
+        if not cited_section_found(target, title):
             start = offsets[match.start()] if match.start() < len(offsets) else len(text)
             number = sum(1 for s in line_starts[1:] if s <= start) + 1
             problems.append(f"{where}:{number}: cites the section \"{title}\" of {name}, "
                             f"which has no such heading")
 
 
+# The checker's own test, whose made-up pages cite missing ones on purpose.
+NOT_CHECKED = {pathlib.Path("tests/docs/link_checker_finds_broken.sh")}
+
+
 def check_code(root, problems):
     for file in sorted(root.rglob("*")):
         relative = file.relative_to(root)
+        if relative in NOT_CHECKED:
+            continue
         if (not file.is_file() or file.suffix not in CODE_SUFFIXES
                 or relative.parts[0] not in SOURCE_FOLDERS or relative.parts[0] == "docs"):
             continue
@@ -137,6 +175,21 @@ def check_code(root, problems):
             for page in re.findall(r"(?<![\w./-])(docs/[A-Za-z0-9_-]+\.md)", line):
                 if not (root / page).exists():
                     problems.append(f"{relative}:{number}: cites '{page}', which does not exist")
+        # Cited sections, the comment's lines joined (comment markers dropped).
+        lines = text.splitlines()
+        joined = " ".join(re.sub(r"^\s*(?://+|#+|\*)?\s*", "", l) for l in lines)
+        starts, at = [], 0
+        for l in lines:
+            starts.append(at)
+            at += len(re.sub(r"^\s*(?://+|#+|\*)?\s*", "", l)) + 1
+        for match in CODE_SECTION.finditer(joined):
+            page, title = root / match.group(1), match.group(2)
+            if not page.exists():
+                continue  # reported above
+            if not cited_section_found(page, title):
+                number = sum(1 for s in starts if s <= match.start())
+                problems.append(f"{relative}:{number}: cites the section \"{title}\" of "
+                                f"{match.group(1)}, which has no such heading")
 
 
 def main():

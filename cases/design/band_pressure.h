@@ -1,5 +1,5 @@
 // The mean and peak pressure over each measuring point's band of a garment (docs/design.md,
-// "Bands"): the part of the garment whose rest height along it (m from its bottom edge) lies
+// "The method"): the part of the garment whose rest height along it (m from its bottom edge) lies
 // within half a band width of the point's (cases/region_pressure.h: the area-weighted mean over
 // the contact area, the largest vertex pressure). The band is a slab along the limb's axis `a`
 // in the garment's worn shape with each vertex's axial coordinate replaced by its rest height,

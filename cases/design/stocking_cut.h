@@ -1,4 +1,4 @@
-// The cut of a designed tubular garment (docs/design.md, "The cut"): its relaxed circumference
+// The cut of a designed tubular garment (docs/design.md, "The method"): its relaxed circumference
 // at every height, and its outline as one flat piece, the tube opened along a seam, for
 // garment CAD.
 //

@@ -9,10 +9,12 @@
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
+#include "core/closest_names.h"
 #include "core/mesh_transfer.h"
 #include "massspring/dressing.h"
 #include "massspring/massspring_backend.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -162,13 +164,13 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
         }
         placed.panel_angles_rad.push_back(degrees * M_PI / 180.0);
       }
-      for (const auto& [name, degrees] : angles_deg) {
-        bool known = false;
-        for (const Panel& panel : panels) known = known || panel.name == name;
-        if (!known)
+      std::vector<std::string> panel_names;
+      for (const Panel& panel : panels) panel_names.push_back(panel.name);
+      for (const auto& [name, degrees] : angles_deg)
+        if (std::find(panel_names.begin(), panel_names.end(), name) == panel_names.end())
           throw std::invalid_argument(
-              "Placement/Dressing/Panel angles: the garment has no panel '" + name + "'");
-      }
+              "Placement/Dressing/Panel angles: the garment has no panel '" + name + "'" +
+              did_you_mean(name, panel_names));
       const std::vector<Vec3> open =
           wrap_panels_round_axis(scenario.garment, scenario.mesh, placed);
       try {

@@ -1,5 +1,5 @@
 // Measurements/List: weight on plane. A garment lying flat and unstretched on a plane body
-// under gravity (docs/model.md, "A sheet on a plane"): the plane carries the weight of each
+// under gravity (docs/model.md, "Closed forms"): the plane carries the weight of each
 // piece of cloth where it lies, so the contact traction is the weight per area,
 // p = rho_A g (up . n), at every vertex; the garment's own forces vanish, so the paper's
 // definition reads zero. The reference pressure (p_theory_Pa) is the former under the contact

@@ -83,7 +83,7 @@ TEST(FromFilePlacement, ASettledTubeReadBackStaysSettledOnBothBackends) {
               second.report.iterations);
   EXPECT_LT(second.report.iterations, first.report.iterations / 4);
   // The same equilibrium within the stop rule: it leaves a strain error of about its Relative
-  // tolerance, 1e-4 (docs/model.md, "Reaching equilibrium"), 5e-4 of the pressure at this
+  // tolerance, 1e-4 (docs/backends.md, "Reaching equilibrium"), 5e-4 of the pressure at this
   // strain of 0.2. Measured 1.7e-4 apart; 1e-3 allowed.
   EXPECT_NEAR(second.p_mean_Pa(), first.p_mean_Pa(), 1e-3 * first.p_mean_Pa());
 

@@ -30,7 +30,7 @@ FabricParameters linear_fabric(double nu) {
 }
 
 // Linear Biot, nu12 = 0: the hoop force per rest width is Y1 (lambda - 1) whether the strip is
-// free or held (docs/model.md, "A tube on a cone: Laplace's law"), to the bisection's 1e-12.
+// free or held (docs/closed-forms.md, "A tube on a cone: Laplace's law"), to the bisection's 1e-12.
 TEST(HoopForce, LinearBiotWithoutPoissonIsYTimesStrain) {
   for (HoopStrip strip : {HoopStrip::free, HoopStrip::held}) {
     const HoopForce hoop(law("linear biot", linear_fabric(0.0)), strip, 1.0);

@@ -2,9 +2,9 @@
 // circular sections, where Laplace's law is the simulation's answer to the mesh's error.
 //
 // 1. A stocking cut to known circumferences c* presses, band by band, Laplace's pressure
-//    p = N(g / c) cos^2(a) 2 pi / g x sin(pi/n) / (pi/n) (docs/model.md, "A tube on a cone:
-//    Laplace's law": the ring held along the axis has the meridian stretch 1 / cos a, the
-//    polygon of n vertices round the factor sin(pi/n) / (pi/n)).
+//    p = N(g / c) cos^2(a) 2 pi / g x sin(pi/n) / (pi/n) (docs/closed-forms.md, "A tube on a cone:
+//    Laplace's law": the ring held along the axis has the meridian stretch 1 / cos a, the polygon
+//    of n vertices round the factor sin(pi/n) / (pi/n)).
 // 2. Given the pressures that simulation gave as targets, the design recovers c* from
 //    Laplace's first guess within two simulations.
 // The stocking: 8 panels, 1 cm edges, linear Biot 300 N/m round the limb with no Poisson

@@ -2,7 +2,8 @@
 # Runs the example commands of README.md as written, each in a scratch folder laid out like the
 # repository (cases/, data/, scripts/ and build/ linked in), and fails naming the first command
 # that does not exit with status 0.
-#   readme_examples.sh SOURCE_DIR BUILD_DIR SCRATCH_DIR quick|long
+#   readme_examples.sh SOURCE_DIR BUILD_DIR SCRATCH_DIR quick|long [PAGE]
+# PAGE is README.md unless given (the quick start and the cookbook pages run the same way).
 # Commands are the lines of the README's ```sh blocks (a trailing "\" joins lines; a trailing
 # "# ..." comment is dropped). A command whose comment gives a time in minutes ("# ~3 min")
 # takes minutes: it runs only with "long" (the test docs_readme_examples_long, which
@@ -15,7 +16,8 @@ source_dir=$1
 build_dir=$2
 scratch=$3
 mode=$4
-readme=$source_dir/README.md
+readme=${5:-$source_dir/README.md}
+page=$(basename "$readme")
 
 rm -rf "$scratch"
 mkdir -p "$scratch"
@@ -65,7 +67,7 @@ while IFS=$'\t' read -r kind command; do
   start=$(date +%s)
   # stdin from /dev/null: a command that reads it (mpirun does) must not eat the list.
   if ! (cd "$scratch" && bash -c "$command") </dev/null >"$scratch/last.log" 2>&1; then
-    echo "FAILED (the README's command, run in $scratch):"
+    echo "FAILED ($page's command, run in $scratch):"
     echo "  $command"
     tail -n 30 "$scratch/last.log"
     exit 1
@@ -78,4 +80,4 @@ if [ "$ran" -eq 0 ]; then
   echo "no $mode command found in $readme"
   exit 1
 fi
-echo "$ran README commands ran as written ($skipped of the other kind left to the $([ "$mode" = quick ] && echo long || echo quick) test)"
+echo "$ran $page commands ran as written ($skipped of the other kind left to the $([ "$mode" = quick ] && echo long || echo quick) test)"

@@ -3,7 +3,7 @@
 // of the return-mapped tangential force with the normal contact force it scales with, against
 // central finite differences, on the sticking and the slipping branch, at random states; first one
 // node at a time on three bodies, then the whole assembled Newton tangent of a tube that friction
-// holds partly on a growing cylinder (docs/backends.md, "Friction").
+// holds partly on a growing cylinder (docs/model.md, "Friction").
 #include "bodies/cone.h"
 #include "bodies/cylinder.h"
 #include "bodies/mesh_body.h"
