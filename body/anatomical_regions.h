@@ -1,4 +1,4 @@
-// Regions of the body named by anatomy instead of coordinates (docs/bodies.md, "Named
+// Regions of the body named by anatomy instead of coordinates (docs/measuring-bodies.md, "Named
 // regions"): bands of a stated width round the girth lines, patches of the torso's front or
 // back, and bands round each leg at RAL-GZ 387's measuring points B, C and G, each built from the
 // body's landmarks (body_measurements.h) as boxes and tubes.
@@ -31,7 +31,7 @@ struct AnatomyRequest {
 
 // bust, under-bust band, waist band, hip band, scapulae, B, C, G, knee, calf, thigh, upper arm.
 const std::vector<std::string>& anatomical_region_names();
-// The default width of each (m), as docs/bodies.md ("Named regions") lists them.
+// The default width of each (m), as docs/measuring-bodies.md ("Named regions") lists them.
 double default_region_width_m(const std::string& name);
 
 // Throws BodyMeasureError for an unknown name or a side or facing the region does not have.

@@ -1,6 +1,6 @@
 // The size of a loaded body, printed and checked before anything is solved on it
-// (docs/bodies.md, "The size check"): a body in millimetres read as metres is a thousand times
-// too large, a person read with the wrong up axis lies along x or y.
+// (docs/measuring-bodies.md, "The size check"): a body in millimetres read as metres is a thousand
+// times too large, a person read with the wrong up axis lies along x or y.
 #pragma once
 
 #include "bodies/triangle_surface.h"
