@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 namespace tightfit {
 namespace {
@@ -51,7 +52,11 @@ Cone cone() {
   f.stiffness_warp_N_per_m = 150;
   f.poisson_weft_warp = 0;
   c.hoop = std::make_unique<HoopForce>(make_material_law("linear biot", f), HoopStrip::held, 1.0);
-  c.dir = (std::filesystem::temp_directory_path() / "tightfit_design_cone").string();
+  // A folder per test: CTest runs the tests of this file side by side.
+  c.dir = (std::filesystem::temp_directory_path() /
+           ("tightfit_design_cone_" +
+            std::string(testing::UnitTest::GetInstance()->current_test_info()->name())))
+              .string();
   return c;
 }
 
