@@ -22,7 +22,8 @@ HeldTurn::HeldTurn(const std::vector<VertexConstraint>& constraints, int n_verti
 }
 
 double HeldTurn::turn_rate(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
-                           const std::vector<Vec3>& field, bool weighted, Vec3& centre) const {
+                           const std::vector<Vec3>& field, bool weighted, Vec3& centre,
+                           double& inertia) const {
   if (x.size() != mass_kg.size() || x.size() != field.size())
     throw std::invalid_argument("HeldTurn: positions, masses and field differ in size");
   double mass = 0.0;
@@ -33,7 +34,8 @@ double HeldTurn::turn_rate(const std::vector<Vec3>& x, const std::vector<double>
   }
   if (!(mass > 0)) return 0.0;
   centre /= mass;
-  double moment = 0.0, inertia = 0.0;
+  double moment = 0.0;
+  inertia = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3 t = axis_.cross(x[i] - centre);
     moment += (weighted ? mass_kg[i] : 1.0) * t.dot(field[i]);
@@ -46,13 +48,10 @@ double HeldTurn::remove_from_forces(const std::vector<Vec3>& x, const std::vecto
                                     std::vector<Vec3>& force) const {
   if (!active_) return 0.0;
   Vec3 centre;
-  const double acceleration = turn_rate(x, mass_kg, force, false, centre);
   double inertia = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const Vec3 t = axis_.cross(x[i] - centre);
-    force[i] -= mass_kg[i] * acceleration * t;
-    inertia += mass_kg[i] * t.squaredNorm();
-  }
+  const double acceleration = turn_rate(x, mass_kg, force, false, centre, inertia);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    force[i] -= mass_kg[i] * acceleration * axis_.cross(x[i] - centre);
   return acceleration * inertia;
 }
 
@@ -61,7 +60,8 @@ void HeldTurn::remove_from_velocities(const std::vector<Vec3>& x,
                                       std::vector<Vec3>& velocity) const {
   if (!active_) return;
   Vec3 centre;
-  const double rate = turn_rate(x, mass_kg, velocity, true, centre);
+  double inertia = 0.0;
+  const double rate = turn_rate(x, mass_kg, velocity, true, centre, inertia);
   for (std::size_t i = 0; i < x.size(); ++i) velocity[i] -= rate * axis_.cross(x[i] - centre);
 }
 

@@ -40,8 +40,10 @@ class HeldTurn {
  private:
   // The angular velocity (or acceleration) of the best rigid turn in `field` about the axis
   // through the centre of mass `centre`; `weighted`: the field is per unit mass (velocities).
+  // `inertia`: I = sum_i m_i |t_i|^2, kg m^2.
   double turn_rate(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
-                   const std::vector<Vec3>& field, bool weighted, Vec3& centre) const;
+                   const std::vector<Vec3>& field, bool weighted, Vec3& centre,
+                   double& inertia) const;
 
   bool active_ = false;
   Vec3 axis_ = Vec3::UnitZ();
