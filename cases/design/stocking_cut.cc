@@ -39,8 +39,10 @@ std::vector<CutKnot> design_cut(const PiecewiseLinear& limb_girths_m,
 std::string relaxed_girths_setting(const std::vector<CutKnot>& knots) {
   std::string text;
   char piece[64];
+  // Every digit a double holds: the last knot is the tube's length, which the case checks the
+  // heights against (a rounded length can lie beyond it).
   for (const CutKnot& k : knots) {
-    std::snprintf(piece, sizeof piece, "%s%.10g:%.10g", text.empty() ? "" : ", ", k.height_m,
+    std::snprintf(piece, sizeof piece, "%s%.17g:%.17g", text.empty() ? "" : ", ", k.height_m,
                   k.circumference_m);
     text += piece;
   }
