@@ -4,6 +4,7 @@
 #include "cases/design/case_simulation.h"
 #include "cases/design/design_file.h"
 #include "cases/design/design_loop.h"
+#include "cases/design/design_report.h"
 #include "cases/design/stocking_cut.h"
 #include "core/units.h"
 #include "io/csv_table.h"
@@ -132,77 +133,61 @@ int design_command(const CommandLine& cl, std::ostream& out) {
 
   // What the simulation adds to Laplace's law, band by band (design.csv, written before the
   // check, which may take long, and again with it).
-  const auto final_design = [&](const std::vector<BandPressure>& check) {
-    std::vector<std::string> headers = {
-        "point", "H [m]", "target", "Laplace", "Laplace error", "simulated mean", "simulated peak"};
-    std::vector<std::string> columns = {"point",           "height_m",    "girth_m",
-                                        "circumference_m", "target_mmHg", "laplace_mmHg",
-                                        "mean_mmHg",       "peak_mmHg"};
-    if (!check.empty()) {
-      headers.insert(headers.end(),
-                     {settings.check_backend + " mean", settings.check_backend + " peak"});
-      columns.insert(columns.end(), {"check_mean_mmHg", "check_peak_mmHg"});
-    }
-    TextTable final_table(std::string(result.met ? "The design" : "The last iteration (not met)") +
-                              " after " + std::to_string(result.iterations.size()) +
-                              " simulations, " + format_fixed(total_s, 0) +
-                              " s: Laplace's law against the simulation, mmHg",
-                          headers);
-    CsvTable final_csv((dir / "design.csv").string(), columns);
-    for (std::size_t k = 0; k < last.bands.size(); ++k) {
-      const DesignBand& b = last.bands[k];
-      std::vector<std::string> row = {problem.points[k].name,
-                                      format_fixed(problem.points[k].value, 4),
-                                      format_fixed(mmHg(problem.targets_Pa[k]), 2),
-                                      format_fixed(mmHg(b.laplace_Pa), 2),
-                                      format_fixed(mmHg(b.laplace_Pa - b.mean_Pa), 2),
-                                      format_fixed(mmHg(b.mean_Pa), 2),
-                                      format_fixed(mmHg(b.peak_Pa), 2)};
-      std::vector<CsvCell> cells = {problem.points[k].name,
-                                    problem.points[k].value,
-                                    problem.girths_m[k],
-                                    b.circumference_m,
-                                    mmHg(problem.targets_Pa[k]),
-                                    mmHg(b.laplace_Pa),
-                                    mmHg(b.mean_Pa),
-                                    mmHg(b.peak_Pa)};
-      if (!check.empty()) {
-        row.push_back(format_fixed(mmHg(check[k].mean_Pa), 2));
-        row.push_back(format_fixed(mmHg(check[k].peak_Pa), 2));
-        cells.push_back(mmHg(check[k].mean_Pa));
-        cells.push_back(mmHg(check[k].peak_Pa));
-      }
-      final_table.add_row(row);
-      final_csv.write_row(cells);
-    }
-    return final_table;
-  };
-  final_design({});
+  const std::string title =
+      std::string(result.met ? "The design" : "The last iteration (not met)") + " after " +
+      std::to_string(result.iterations.size()) + " simulations, " + format_fixed(total_s, 0) +
+      " s: Laplace's law against the simulation, mmHg";
+  DesignCheck check;
+  check.backend = settings.check_backend;
+  check.tolerance_Pa = settings.check_tolerance_mmHg * units::pascal_per_mmHg;
+  write_design_csv((dir / "design.csv").string(), problem, last, check);
 
-  // The check on another backend: the final cut once more.
-  std::vector<BandPressure> check;
-  if (!settings.check_backend.empty()) {
-    out << "Checking the cut on the " << settings.check_backend << " backend ("
-        << (dir / ("check_" + settings.check_backend)).string() << ")\n"
+  // The check on another backend: the final cut once more, from the case's placement.
+  const std::string check_dir = (dir / ("check_" + check.backend)).string();
+  if (!check.backend.empty()) {
+    out << design_table(title, problem, last, check) << "Checking the cut on the " << check.backend
+        << " backend (" << check_dir << ")\n"
         << std::flush;
+    const auto check_start = std::chrono::steady_clock::now();
     try {
-      check = simulate_cut(setup, c, settings.check_backend,
-                           (dir / ("check_" + settings.check_backend)).string());
+      check.bands = simulate_cut(setup, c, check.backend, check_dir);
     } catch (const DesignRunFailed& e) {
-      out << "the check on the " << settings.check_backend << " backend failed: " << e.what()
-          << "\n";
+      check.failure = e.what();
     }
+    out << "  the check took "
+        << format_fixed(
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start)
+                   .count(),
+               0)
+        << " s\n";
+    write_design_csv((dir / "design.csv").string(), problem, last, check);
   }
 
-  const TextTable final_table = final_design(check);
-  out << final_table << "  results in " << dir.string()
+  out << design_table(title, problem, last, check) << "  results in " << dir.string()
       << "/ (design_iterations.csv, design.csv, cut.csv, cut.svg, cut.dxf, iteration_N/";
-  if (!check.empty()) out << ", check_" << settings.check_backend << "/";
+  if (!check.backend.empty()) out << ", " << check_dir << "/";
   out << ")\n";
   if (!result.met)
     out << "  not every band is within " << settings.tolerance_mmHg << " mmHg after "
         << settings.maximum_iterations << " simulations\n";
-  return result.met ? 0 : 1;
+  bool check_holds = true;
+  if (!check.backend.empty()) {
+    const std::vector<std::string> outside = check_outside(problem, check);
+    check_holds = check.failure.empty() && outside.empty();
+    if (!check.failure.empty()) {
+      out << "  the check on the " << check.backend << " backend did not finish: " << check.failure
+          << "\n";
+    } else if (outside.empty()) {
+      out << "  the check on the " << check.backend << " backend: every band within "
+          << settings.check_tolerance_mmHg << " mmHg of its target\n";
+    } else {
+      std::string names;
+      for (const std::string& n : outside) names += (names.empty() ? "" : ", ") + n;
+      out << "  the check on the " << check.backend << " backend: band(s) " << names
+          << " farther than " << settings.check_tolerance_mmHg << " mmHg from the target\n";
+    }
+  }
+  return result.met && check_holds ? 0 : 1;
 }
 
 }  // namespace tightfit

@@ -85,6 +85,10 @@ void declare_design(ParameterHandler& prm) {
   prm.declare_entry("Check backend", "none", Patterns::Selection("none|massspring|fem"),
                     "Runs the final design once more on this backend and reports its bands "
                     "beside the design's; none: no check.");
+  prm.declare_entry("Check tolerance", "1", Patterns::Double(1e-6),
+                    "How close every band's mean on the check backend must come to its target "
+                    "(mmHg); the design's exit status is 1 when one does not, or the check does "
+                    "not finish.");
   prm.declare_entry("Output directory", "output/design", Patterns::Anything(),
                     "Where the iterations' runs, the tables and the cut are written.");
   prm.leave_subsection();
@@ -238,6 +242,7 @@ DesignSettings DesignFile::settings() const {
     s.hoop_strip = prm.get("Hoop strip") == "held" ? HoopStrip::held : HoopStrip::free;
     s.largest_strain = prm.get_double("Largest strain");
     s.check_backend = prm.get("Check backend") == "none" ? "" : prm.get("Check backend");
+    s.check_tolerance_mmHg = prm.get_double("Check tolerance");
     s.output_directory = prm.get("Output directory");
   } catch (...) {
     prm.leave_subsection();

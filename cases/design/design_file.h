@@ -24,6 +24,7 @@ struct DesignSettings {
   HoopStrip hoop_strip = HoopStrip::free;
   double largest_strain = 1.0;  // the strain range of a law without a curve
   std::string check_backend;    // empty: none
+  double check_tolerance_mmHg = 1.0;
   std::string output_directory = "output/design";
 };
 

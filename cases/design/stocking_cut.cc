@@ -82,7 +82,9 @@ void write_cut_svg(const std::string& path, const std::string& piece,
   const CutOutline outline = cut_outline(knots);
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write '" + path + "'");
-  const double margin = 20, w = outline.width_mm + 2 * margin, h = outline.height_mm + 2 * margin;
+  // Room on the right for the points' labels ("G 33.1 cm", 9 mm type: about 45 mm).
+  const double margin = 20, labels = 50;
+  const double w = outline.width_mm + 2 * margin + labels, h = outline.height_mm + 2 * margin;
   // SVG's y points down: the top of the garment is at the top of the drawing.
   const auto x = [&](const Vec2& p) { return p.x() + margin; };
   const auto y = [&](const Vec2& p) { return margin + outline.height_mm - p.y(); };
