@@ -86,7 +86,16 @@ int design_command(const CommandLine& cl, std::ostream& out) {
       << ", hoop strip " << (settings.hoop_strip == HoopStrip::free ? "free" : "held")
       << ", strain range 0 to " << hoop.largest_strain() << ") on the " << parameters.backend
       << " backend; every band within " << settings.tolerance_mmHg << " mmHg, at most "
-      << settings.maximum_iterations << " simulations\n\n";
+      << settings.maximum_iterations << " simulations\n";
+  // Points closer than a band width share part of their bands (and so their peaks).
+  for (std::size_t k = 1; k < problem.points.size(); ++k) {
+    const double apart = problem.points[k].value - problem.points[k - 1].value;
+    if (apart < settings.band_width_m)
+      out << "  note: the bands of " << problem.points[k - 1].name << " and "
+          << problem.points[k].name << " overlap (" << format_fixed(100 * apart, 1)
+          << " cm apart, bands " << format_fixed(100 * settings.band_width_m, 1) << " cm wide)\n";
+  }
+  out << "\n";
 
   CsvTable iterations((dir / "design_iterations.csv").string(),
                       {"iteration", "seconds", "point", "height_m", "girth_m", "circumference_m",
