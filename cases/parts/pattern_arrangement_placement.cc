@@ -7,6 +7,7 @@
 #include "bodies/mesh_import.h"
 #include "bodies/polygon_mesh.h"
 #include "body/garment_arrangement.h"
+#include "cases/coarse_dressing.h"
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
@@ -130,12 +131,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);
         const DressingResult dressed = backend_registry().dressing_stage().dress(
             scenario.problem, scenario.garment, start, dressing);
-        std::printf(
-            "  dressing: seams closed (largest gap %.3g m < %.3g m) after %d frames, %.1f s; %d "
-            "welded vertices put back on the body from at most %.3g m inside\n",
-            dressed.largest_seam_gap_m, dressed.closed_below_m, dressed.frames,
-            dressed.wall_seconds, dressed.vertices_put_back, dressed.deepest_m);
-        std::fflush(stdout);
+        print_dressing(dressed);
         return dressed.welded_positions_m;
       } catch (const std::invalid_argument& error) {
         throw std::invalid_argument(std::string("Placement/Pattern arrangement: ") + error.what());
