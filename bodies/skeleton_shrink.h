@@ -17,18 +17,12 @@
 // the chest, nearer the arm's root than the torso's axis, do not swing with it.
 #pragma once
 
+#include "core/skeleton_bone.h"
 #include "core/types.h"
 
-#include <string>
 #include <vector>
 
 namespace tightfit {
-
-struct SkeletonBone {
-  std::string name;  // torso, arm left, ...
-  Vec3 root_m = Vec3::Zero();
-  Vec3 end_m = Vec3::UnitZ();  // not at the root
-};
 
 class SkeletonShrink {
  public:

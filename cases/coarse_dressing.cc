@@ -2,8 +2,8 @@
 
 #include "bodies/surface_return.h"
 #include "cases/scenario.h"
+#include "core/backend_registry.h"
 #include "core/mesh_transfer.h"
-#include "massspring/massspring_backend.h"
 
 #include <cstdio>
 #include <sstream>
@@ -35,17 +35,10 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
   }
   std::vector<Vec3> coarse_x = dressed->start_positions_m;
   if (settle_rule.relative_tolerance > 0) {
-    MassSpringParameters settle;
-    settle.stop.norm = StopNorm::rms;
-    settle.stop.relative_tolerance = settle_rule.relative_tolerance;
-    settle.net_force_tolerance = settle_rule.net_force_tolerance;
-    settle.slide_damping_per_s = settle_rule.slide_damping_per_s;
-    settle.contact_updates = 0;
-    MassSpringBackend backend(dressed->problem, settle);
-    backend.set_positions(coarse_x);
-    const StepReport report = backend.solve(dressed->prepare_step(0));
-    std::printf("  dressing: the coarse mesh settled: %s\n", report.text().c_str());
-    coarse_x = backend.state().positions_m;
+    const SettledGarment settled = backend_registry().dressing_stage().settle(
+        dressed->problem, coarse_x, dressed->prepare_step(0), settle_rule);
+    std::printf("  dressing: the coarse mesh settled: %s\n", settled.report.text().c_str());
+    coarse_x = settled.positions_m;
   }
   std::vector<Vec3> x = transfer_positions(dressed->mesh, coarse_x, scenario.mesh);
   const double allowed_m = 0.25 * dressed->mean_edge_length_m;

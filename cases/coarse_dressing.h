@@ -4,7 +4,7 @@
 #pragma once
 
 #include "cases/case_parameters.h"
-#include "massspring/dressing.h"
+#include "core/dressing_stage.h"
 
 #include <string>
 #include <vector>
@@ -14,19 +14,12 @@ namespace tightfit {
 // Coarse to fine (Coarse edge length): the case's garment meshed at `coarse_m` is dressed by
 // `dress_coarse` in a scenario of its own; with a settle rule (a relative tolerance > 0) the
 // welded coarse garment then settles as the case's first load step would (gravity, friction),
-// on the mass-spring backend with its default settings, the rms stop rule at that relative
-// tolerance and the rule's net force tolerance and slide damping, so that the slow slide of a
-// dressed top over the body is done on the cheap mesh;
+// on the dressing stage's backend (DressingStage::settle, core/dressing_stage.h), so that the
+// slow slide of a dressed top over the body is done on the cheap mesh;
 // its state is carried to the case's mesh in pattern space (core/mesh_transfer.h). Fine vertices on
 // a coarse triangle's chord of the body may lie inside it by the chord's sagitta (h^2 / 8 R: about
 // 2 mm for 30 mm edges round a 5 cm arm); up to a quarter of a coarse edge they go back onto the
 // surface, as a dressing's own welded vertices do.
-struct CoarseSettle {
-  double relative_tolerance = 0.0;   // 0: the coarse garment is carried as dressed
-  double net_force_tolerance = 0.0;  // Mass spring/Net force tolerance of the settle
-  double slide_damping_per_s = 0.0;  // Mass spring/Slide damping of the settle
-};
-
 std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
                                       const CoarseSettle& settle_rule,
                                       const PlacementMaker& dress_coarse,

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "cases/case_parameters.h"
-#include "massspring/dressing.h"
+#include "core/dressing_stage.h"
 
 #include <string>
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/backend.h"
+#include "core/dressing_stage.h"
 #include "core/load_step.h"
 
 #include <functional>
@@ -30,6 +31,8 @@ struct BackendEntry {
   std::function<std::unique_ptr<Backend>(const Problem&, const StopRule&,
                                          dealii::ParameterHandler&)>
       create;
+  // The backend's dressing stage (core/dressing_stage.h), or null when it has none.
+  std::shared_ptr<const DressingStage> dressing_stage;
 };
 
 class BackendRegistry {
@@ -38,6 +41,10 @@ class BackendRegistry {
   // Throws std::invalid_argument listing the known names when `name` is unknown.
   const BackendEntry& find(const std::string& name) const;
   const std::vector<BackendEntry>& entries() const { return entries_; }
+  // The dressing stage of the first backend that has one: a garment is dressed on it whichever
+  // backend then solves the load steps (docs/dressing.md). Throws std::logic_error when none
+  // has one.
+  const DressingStage& dressing_stage() const;
   // "massspring|fem", for a Patterns::Selection.
   std::string names_joined(const char* separator) const;
 

@@ -6,6 +6,7 @@
 #include "bodies/scaled_body.h"
 #include "bodies/skeleton_shrunk_body.h"
 #include "core/interruption.h"
+#include "massspring/massspring_parameters.h"
 #include "massspring/open_seam_garment.h"
 #include "massspring/unwelded_panels.h"
 
@@ -19,14 +20,16 @@
 
 namespace tightfit {
 
-void draw_seams_from_afar(DressingSettings& settings) {
-  settings.stiffness_over_mass_ratio = 4.0;
-  settings.limit_seam_pull = true;
-  settings.sewn_stiffness_factor = 2.0;
-  settings.growth_gap_fraction = 1.0;
-}
-
 namespace {
+
+// The backend's settings for the dressing's motion: its defaults (time step, quasi-static
+// frames, bending rigidity) and the stage's seam stiffness and damping.
+MassSpringParameters dressing_parameters(const DressingSettings& settings) {
+  MassSpringParameters parameters;
+  parameters.seam_stiffness_factor = settings.seam_stiffness_factor;
+  parameters.damping_per_s = settings.damping_per_s;
+  return parameters;
+}
 
 // The panel an unwelded vertex belongs to, and its index in that panel.
 std::pair<int, int> panel_vertex(const SimulationMesh& mesh, int u) {
@@ -126,7 +129,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
   if (!(settings.start_scale > 0.0 && settings.start_scale <= 1.0))
     throw std::invalid_argument("dressing: the body's start scale must lie in (0, 1]");
   const SimulationMesh& welded = *problem.mesh;
-  OpenSeamGarment open(problem, settings.mass_spring);
+  OpenSeamGarment open(problem, dressing_parameters(settings));
   if (static_cast<int>(start_m.size()) != welded.n_unwelded_vertices())
     throw std::invalid_argument("dressing: " + std::to_string(start_m.size()) +
                                 " start positions for " +
@@ -210,7 +213,7 @@ DressingResult dress(const Problem& problem, const Garment& garment,
     open.set_seam_fraction(ramp(result.frames + 1, settings.seam_ramp_frames));
     // The stiffness bounds move with the shape (a stiffening law's tangent); cheap at this rate.
     if (result.frames % 100 == 0) dt = open.time_step_s();
-    const bool quasi_static = result.frames < settings.mass_spring.quasi_static_frames;
+    const bool quasi_static = result.frames < open.parameters().quasi_static_frames;
     if (quasi_static) std::fill(v.begin(), v.end(), Vec3::Zero());
     open.rk4_frame(dt, quasi_static ? 0.0 : damping, false);
     ++result.frames;

@@ -1,6 +1,7 @@
 #include "massspring/massspring_entry.h"
 
 #include "massspring/massspring_backend.h"
+#include "massspring/massspring_dressing_stage.h"
 #include "massspring/massspring_parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -43,6 +44,7 @@ BackendEntry massspring_backend_entry() {
     parameters.validate();
     return std::make_unique<MassSpringBackend>(problem, parameters);
   };
+  entry.dressing_stage = std::make_shared<MassSpringDressingStage>();
   return entry;
 }
 

@@ -14,9 +14,8 @@ only)": none). Checked:
   folder of the table once, and every folder a row allows lies on a line below that row's;
 - every top-level folder whose CMakeLists.txt builds a library has a row;
 - the backends' folders are included from no other folder except by the files that
-  BACKEND_USERS lists (the backend registry, and the dressing stage that still runs the
-  mass-spring backend itself); a listed file that no longer includes a backend fails too, so
-  the list only shrinks.
+  BACKEND_USERS lists (the backend registry); a listed file that no longer includes a backend
+  fails too, so the list only shrinks.
 Prints one line per broken rule, `file:line: what`, and exits 1 if there is any.
 """
 import pathlib
@@ -26,16 +25,7 @@ import sys
 BACKENDS = ("massspring", "fem")
 # Files outside the backends' folders that may include a backend's headers (docs/scenarios.md,
 # "The layers").
-BACKEND_USERS = (
-    "cases/backends.cc",
-    "cases/coarse_dressing.cc",
-    "cases/coarse_dressing.h",
-    "cases/failed_dressing_output.h",
-    "cases/parts/arrangement_placement.cc",
-    "cases/parts/dressing_placement.cc",
-    "cases/parts/part_entries.h",
-    "cases/parts/pattern_arrangement_placement.cc",
-)
+BACKEND_USERS = ("cases/backends.cc",)
 SUFFIXES = (".h", ".cc", ".in")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 FOLDER = re.compile(r"`([a-z_]+)/`")

@@ -10,7 +10,7 @@
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
 #include "contact/penalty_contact.h"
-#include "massspring/dressing.h"
+#include "core/backend_registry.h"
 
 #include <cstdio>
 #include <iostream>
@@ -105,7 +105,8 @@ PlacementMaker arrange(const ArrangementSettings& a, std::optional<double> fixed
     write_failed_dressing_to(s.parameters.output, settings);
     const std::vector<Vec3> open = wrap_panels_round_axis(s.garment, s.mesh, plan.wrap);
     try {
-      const DressingResult dressed = dress(s.problem, s.garment, open, settings);
+      const DressingResult dressed =
+          backend_registry().dressing_stage().dress(s.problem, s.garment, open, settings);
       print_dressing(dressed);
       return dressed.welded_positions_m;
     } catch (const std::invalid_argument& error) {

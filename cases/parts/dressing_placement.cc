@@ -1,6 +1,6 @@
 // Placement/Kind = dressing: the garment's panels, unsewn, wrapped on an elliptic cylinder round
 // an axis outside the body (bodies/panel_wrap.h), then sewn onto the body by the dressing stage
-// (massspring/dressing.h): seam springs close the seams while the body grows from a shrunk
+// (core/dressing_stage.h): seam springs close the seams while the body grows from a shrunk
 // start to its shape; the welded garment is the start of the load steps, on either backend
 // (docs/dressing.md).
 #include "bodies/panel_wrap.h"
@@ -9,10 +9,9 @@
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
+#include "core/backend_registry.h"
 #include "core/closest_names.h"
 #include "core/mesh_transfer.h"
-#include "massspring/dressing.h"
-#include "massspring/massspring_backend.h"
 
 #include <algorithm>
 #include <cmath>
@@ -138,7 +137,7 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     if (prm.get("Scale about") == "axis") settings.scale_axis = wrap.axis;
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
-    settings.mass_spring.seam_stiffness_factor = prm.get_double("Seam stiffness factor");
+    settings.seam_stiffness_factor = prm.get_double("Seam stiffness factor");
     settings.closed_fraction = prm.get_double("Closed gap");
     settings.progress = &std::cout;
     const double coarse_m = prm.get_double("Coarse edge length");
@@ -176,7 +175,8 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
       try {
         DressingSettings writing = settings;
         write_failed_dressing_to(scenario.parameters.output, writing);
-        const DressingResult dressed = dress(scenario.problem, scenario.garment, open, writing);
+        const DressingResult dressed = backend_registry().dressing_stage().dress(
+            scenario.problem, scenario.garment, open, writing);
         print_dressing(dressed);
         return dressed.welded_positions_m;
       } catch (const std::invalid_argument& error) {

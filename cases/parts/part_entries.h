@@ -5,7 +5,7 @@
 
 #include "cases/case_parameters.h"
 #include "cases/part_registry.h"
-#include "massspring/dressing.h"
+#include "core/dressing_stage.h"
 
 namespace tightfit {
 
@@ -32,7 +32,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry();
 PartEntry<PlacementMaker> arrangement_placement_entry();
 PartEntry<PlacementMaker> from_file_placement_entry();
 
-// The dressing stage's frame counts (massspring/dressing.h), shared by the placements that
+// The dressing stage's frame counts (core/dressing_stage.h), shared by the placements that
 // dress: Growth frames, Seam ramp frames, Maximum frames.
 void declare_dressing_frames(ParameterTree& prm);
 void read_dressing_frames(ParameterTree& prm, DressingSettings& settings);

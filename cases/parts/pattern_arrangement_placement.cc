@@ -1,16 +1,17 @@
 // Placement/Kind = pattern arrangement: every panel flat where its pattern file puts it round
 // the file's own body (GarmentCode's translation and rotation), moved onto the case's body by
 // the landmarks (the reference body's torso onto the body's: root, length and girths), then
-// sewn onto the body by the dressing stage (massspring/dressing.h) while the body grows back
+// sewn onto the body by the dressing stage (core/dressing_stage.h) while the body grows back
 // from a start shrunk about its skeleton, each part about its own axis (docs/arrangement.md
 // "Arrangement from the pattern file").
 #include "bodies/mesh_import.h"
 #include "bodies/polygon_mesh.h"
 #include "body/garment_arrangement.h"
+#include "cases/coarse_dressing.h"
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
-#include "massspring/dressing.h"
+#include "core/backend_registry.h"
 
 #include <cmath>
 #include <cstdio>
@@ -106,7 +107,7 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
     draw_seams_from_afar(settings);
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
-    settings.mass_spring.damping_per_s = prm.get_double("Damping");
+    settings.damping_per_s = prm.get_double("Damping");
     settings.progress = &std::cout;
     return [=](const Scenario& scenario) {
       const BodyMeasurements body = measured(surface_of(scenario.body->body()), "case's body");
@@ -128,13 +129,9 @@ PartEntry<PlacementMaker> pattern_arrangement_placement_entry() {
       std::vector<Vec3> start;
       try {
         start = arranged_positions(scenario.garment, scenario.mesh, fit);
-        const DressingResult dressed = dress(scenario.problem, scenario.garment, start, dressing);
-        std::printf(
-            "  dressing: seams closed (largest gap %.3g m < %.3g m) after %d frames, %.1f s; %d "
-            "welded vertices put back on the body from at most %.3g m inside\n",
-            dressed.largest_seam_gap_m, dressed.closed_below_m, dressed.frames,
-            dressed.wall_seconds, dressed.vertices_put_back, dressed.deepest_m);
-        std::fflush(stdout);
+        const DressingResult dressed = backend_registry().dressing_stage().dress(
+            scenario.problem, scenario.garment, start, dressing);
+        print_dressing(dressed);
         return dressed.welded_positions_m;
       } catch (const std::invalid_argument& error) {
         throw std::invalid_argument(std::string("Placement/Pattern arrangement: ") + error.what());

@@ -76,7 +76,7 @@ TEST(BodyMeshInput, TruncatedStlAndPly) {
       {"truncated.stl",
        "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
        "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0",
-       {"stl reader", "line 12"}},
+       {"line 12", "three coordinates"}},
       {"truncated.ply",
        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
        "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
@@ -162,8 +162,8 @@ TEST(BodyMeshInput, InwardFacing) {
 
 // A coordinate that is not a finite number reaches no distance query. OBJ and ASCII STL spell
 // it "nan" or "inf", a binary STL holds the bits. VTK's OBJ reader read "nan" as 0 (the file
-// was accepted with a wrong vertex): the OBJ reader refuses it naming the line; VTK's STL
-// reader passes such values through and the vertex is refused after.
+// was accepted with a wrong vertex): the OBJ and STL readers refuse it naming the line; a
+// binary STL's vertex is refused after reading.
 TEST(BodyMeshInput, CoordinatesThatAreNotFiniteInObjAndStl) {
   const std::string obj = temporary_path("nan.obj");
   write_text(obj,
@@ -173,7 +173,7 @@ TEST(BodyMeshInput, CoordinatesThatAreNotFiniteInObjAndStl) {
   write_text(stl,
              "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
              "vertex 0 inf 0\nendloop\nendfacet\nendsolid t\n");
-  expect_refused(stl, {"not a finite number"});
+  expect_refused(stl, {"line 6", "'inf' is not a finite number"});
   std::string binary(80, ' ');
   const std::uint32_t one = 1;
   binary.append(reinterpret_cast<const char*>(&one), 4);

@@ -1,0 +1,32 @@
+#include "massspring/massspring_dressing_stage.h"
+
+#include "massspring/dressing.h"
+#include "massspring/massspring_backend.h"
+
+namespace tightfit {
+
+DressingResult MassSpringDressingStage::dress(const Problem& problem, const Garment& garment,
+                                              const std::vector<Vec3>& start_m,
+                                              const DressingSettings& settings) const {
+  return tightfit::dress(problem, garment, start_m, settings);
+}
+
+SettledGarment MassSpringDressingStage::settle(const Problem& problem,
+                                               const std::vector<Vec3>& dressed_m,
+                                               const LoadStep& step,
+                                               const CoarseSettle& rule) const {
+  MassSpringParameters parameters;
+  parameters.stop.norm = StopNorm::rms;
+  parameters.stop.relative_tolerance = rule.relative_tolerance;
+  parameters.net_force_tolerance = rule.net_force_tolerance;
+  parameters.slide_damping_per_s = rule.slide_damping_per_s;
+  parameters.contact_updates = 0;
+  MassSpringBackend backend(problem, parameters);
+  backend.set_positions(dressed_m);
+  SettledGarment settled;
+  settled.report = backend.solve(step);
+  settled.positions_m = backend.state().positions_m;
+  return settled;
+}
+
+}  // namespace tightfit
