@@ -132,7 +132,7 @@ std::optional<Vec3> parse_torso_or_vector(const std::string& text, const std::st
 }
 
 bool DressingFrameSpec::needs_landmarks() const {
-  return !centre || !axis || !front || !semi_axis_side.line.empty() ||
+  return !centre || (!axis && !axis_vertical) || !front || !semi_axis_side.line.empty() ||
          !semi_axis_front.line.empty() || !hem_height.line.empty();
 }
 
@@ -140,8 +140,18 @@ DressingFrameSpec parse_dressing_frame(const std::string& centre, const std::str
                                        const std::string& front, const std::string& semi_side,
                                        const std::string& semi_front, const std::string& hem) {
   DressingFrameSpec spec;
-  spec.centre = parse_torso_or_vector(centre, "Centre");
-  spec.axis = parse_torso_or_vector(axis, "Axis");
+  const std::string at = std::string(torso_word) + " at ";
+  if (trimmed(centre).rfind(at, 0) == 0) {
+    spec.centre_line = trimmed(trimmed(centre).substr(at.size()));
+    if (!known(torso_line_names(), spec.centre_line))
+      throw std::invalid_argument("Centre = '" + centre + "': '" + spec.centre_line +
+                                  "' is not a line of the torso (" + joined(torso_line_names()) +
+                                  ")" + did_you_mean(spec.centre_line, torso_line_names(), 0));
+  } else {
+    spec.centre = parse_torso_or_vector(centre, "Centre");
+  }
+  spec.axis_vertical = trimmed(axis) == "vertical";
+  if (!spec.axis_vertical) spec.axis = parse_torso_or_vector(axis, "Axis");
   spec.front = parse_torso_or_vector(front, "Front");
   if (spec.axis && !(spec.axis->norm() > 0)) throw std::invalid_argument("Axis must not be zero");
   if (spec.front && !(spec.front->norm() > 0))
@@ -162,8 +172,13 @@ PanelWrap resolve_dressing_frame(const DressingFrameSpec& spec, const BodyMeasur
     throw std::invalid_argument("the frame needs the body's landmarks, and there are none");
   const PartFrame* torso = body ? &body->part("torso") : nullptr;
   PanelWrap wrap;
+  wrap.axis = spec.axis            ? spec.axis->normalized()
+              : spec.axis_vertical ? Vec3::UnitZ()
+                                   : torso->along;
   wrap.centre_m = spec.centre ? *spec.centre : torso->origin_m;
-  wrap.axis = spec.axis ? spec.axis->normalized() : torso->along;
+  if (!spec.centre_line.empty())  // where the torso's axis reaches the line's height along it
+    wrap.centre_m +=
+        torso->along * line_level_m(*body, spec.centre_line, torso->origin_m, torso->along);
   const Vec3 front = spec.front ? *spec.front : torso->front;
   if (!(std::abs(front.normalized().dot(wrap.axis)) < 1 - 1e-9))
     throw std::invalid_argument("Front lies along the Axis: it must point across it");
@@ -211,14 +226,21 @@ PanelWrap dressing_frame_on_body(const DressingFrameSpec& spec, const Scenario& 
 }
 
 std::string describe_dressing_frame(const DressingFrameSpec& spec, const PanelWrap& wrap) {
+  const std::string where = spec.centre ? ""
+                            : spec.centre_line.empty()
+                                ? " (the torso's)"
+                                : " (the torso's at the " + spec.centre_line + ")";
   char text[512];
   std::snprintf(text, sizeof text,
-                "round the axis (%.4f, %.4f, %.4f) through (%.4f, %.4f, %.4f) m%s, front (%.4f, "
+                "round the axis (%.4f, %.4f, %.4f)%s through (%.4f, %.4f, %.4f) m%s, front (%.4f, "
                 "%.4f, %.4f); semi-axes %.4f m (side: %s) and %.4f m (front: %s); hem %.4f m "
                 "along the axis from the centre (%s)",
-                wrap.axis.x(), wrap.axis.y(), wrap.axis.z(), wrap.centre_m.x(), wrap.centre_m.y(),
-                wrap.centre_m.z(), spec.axis && spec.centre ? "" : " (the torso's)", wrap.front.x(),
-                wrap.front.y(), wrap.front.z(), wrap.semi_axis_side_m,
+                wrap.axis.x(), wrap.axis.y(), wrap.axis.z(),
+                spec.axis            ? ""
+                : spec.axis_vertical ? " (vertical)"
+                                     : " (the torso's)",
+                wrap.centre_m.x(), wrap.centre_m.y(), wrap.centre_m.z(), where.c_str(),
+                wrap.front.x(), wrap.front.y(), wrap.front.z(), wrap.semi_axis_side_m,
                 line_offset_text(spec.semi_axis_side).c_str(), wrap.semi_axis_front_m,
                 line_offset_text(spec.semi_axis_front).c_str(), wrap.hem_height_m,
                 line_offset_text(spec.hem_height).c_str());

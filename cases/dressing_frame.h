@@ -39,6 +39,8 @@ std::optional<Vec3> parse_torso_or_vector(const std::string& text, const std::st
 // side, Semi-axis front, Hem height), parsed.
 struct DressingFrameSpec {
   std::optional<Vec3> centre, axis, front;  // nothing: the torso's
+  std::string centre_line;                  // "torso at LINE": the torso axis's point there
+  bool axis_vertical = false;               // "vertical": tightfit's z, the body's up
   LineOffset semi_axis_side, semi_axis_front, hem_height;
   // Whether any entry needs the body's landmarks.
   bool needs_landmarks() const;

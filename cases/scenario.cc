@@ -123,7 +123,12 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
       parameters.tangential_penalty_ratio * p.contact_stiffness_Pa_per_m;
   p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line);
   p.gravity_m_per_s2 = -parameters.protocol.gravity_m_per_s2 * parameters.protocol.up.normalized();
+  const bool cut_along_line = s.garment_line.has_value();
   s.start_positions_m = parameters.placement.place(s);
+  // A placement that put the garment on a line of the body (a tube on a leg's axis) gives the
+  // line Held direction = axis holds along.
+  if (!cut_along_line && s.garment_line)
+    p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line);
   check_start(s, s.start_positions_m);
   return scenario;
 }

@@ -79,12 +79,14 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     // numbers for a body without landmarks (a cylinder).
     prm.declare_text("Centre", "torso",
                      "A point on the axis, and the point the body is scaled about: three numbers "
-                     "x,y,z (m), or 'torso' for the torso axis's point at the crotch (from the "
-                     "body's landmarks).");
+                     "x,y,z (m), 'torso' for the torso axis's point at the crotch, or 'torso at "
+                     "LINE' for its point at a line of the torso (crotch, hips, waist, "
+                     "under-bust, bust, armpit, neck base), from the body's landmarks.");
     prm.declare_text("Axis", "torso",
-                     "Direction of the axis the panels are wrapped round: three numbers x,y,z (-), "
-                     "or 'torso' for the torso's axis (the line through the centroids of its "
-                     "sections, upwards).");
+                     "Direction of the axis the panels are wrapped round: three numbers x,y,z "
+                     "(-), 'torso' for the torso's axis (the line through the centroids of its "
+                     "sections, upwards), or 'vertical' for the body's up (z, as Body/Mesh/Up "
+                     "axis turned it).");
     prm.declare_text("Front", "torso",
                      "The body's front, the direction of angle 0 round the axis: three numbers "
                      "x,y,z (-), or 'torso' for the torso's front; angles grow towards Axis x "
