@@ -150,33 +150,44 @@ LimbTubeCut cut_tube_along_axis(const TriangleSurface& surface, const Vec3& axis
   return cut;
 }
 
-LimbTubeCut cut_tube_to_leg(const TriangleSurface& surface, const BodyMeasurements& body,
-                            const LimbTubeSpec& spec) {
-  const std::vector<LegPoint> points = leg_measuring_points(surface, body, spec.side);
-  const PartFrame& leg = body.part(spec.side == 0 ? "leg left" : "leg right");
-  // The tube's axis: the line through the centroids of the leg's sections (normal to the leg's
-  // axis) at the points its ends are measured from. The leg's own axis fits the whole leg from
-  // the ankle to the crotch and can pass a centimetre or more from the ankle's centre.
+LegLine leg_line(const TriangleSurface& surface, const BodyMeasurements& body, int side,
+                 const std::string& low, const std::string& high) {
+  const std::vector<LegPoint> points = leg_measuring_points(surface, body, side);
+  const PartFrame& leg = body.part(side == 0 ? "leg left" : "leg right");
+  // The line through the centroids of the leg's sections (normal to the leg's axis) at the two
+  // points. The leg's own axis fits the whole leg from the ankle to the crotch and can pass a
+  // centimetre or more from the ankle's centre.
   const LimbSections leg_sections(surface, leg.origin_m, -leg.along);
-  const auto centroid = [&](const LimbTubeEnd& end, const char* entry) {
+  const auto centroid = [&](const std::string& name, const char* entry) {
     for (const LegPoint& p : points)
-      if (p.name == end.point) {
+      if (p.name == name) {
         if (const auto loop = leg_sections.at(p.axial_m)) return loop->centroid_m;
-        throw BodyMeasureError(std::string(entry) + ": the leg's section at " + end.point +
+        throw BodyMeasureError(std::string(entry) + ": the leg's section at " + name +
                                " is not found");
       }
-    throw std::invalid_argument(std::string(entry) + ": the measuring point " + end.point +
+    throw std::invalid_argument(std::string(entry) + ": the measuring point " + name +
                                 " is not found on this leg");
   };
-  const Vec3 low = centroid(spec.from, "From"), high = centroid(spec.to, "To");
-  Vec3 up = high - low;
-  if (spec.from.point == spec.to.point || !(up.norm() > 0.01)) up = -leg.along;
+  LegLine line;
+  line.point_m = centroid(low, "From");
+  Vec3 up = centroid(high, "To") - line.point_m;
+  if (low == high || !(up.norm() > 0.01)) up = -leg.along;
   up.normalize();
   if (up.dot(-leg.along) < 0) up = -up;
-  std::vector<PointValue> axial;
+  line.up = up;
   for (const LegPoint& p : points)
-    axial.push_back({p.name, up.dot(leg_sections.axis_at(p.axial_m))});
-  return cut_tube_along_axis(surface, low, up, axial, spec);
+    line.axial.push_back({p.name, up.dot(leg_sections.axis_at(p.axial_m))});
+  return line;
+}
+
+double LegLine::axial_at(const LimbTubeEnd& end, const std::string& entry) const {
+  return axial_of(axial, end.point, entry) + end.offset_m;
+}
+
+LimbTubeCut cut_tube_to_leg(const TriangleSurface& surface, const BodyMeasurements& body,
+                            const LimbTubeSpec& spec) {
+  const LegLine line = leg_line(surface, body, spec.side, spec.from.point, spec.to.point);
+  return cut_tube_along_axis(surface, line.point_m, line.up, line.axial, spec);
 }
 
 }  // namespace tightfit

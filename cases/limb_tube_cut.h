@@ -65,8 +65,25 @@ LimbTubeCut cut_tube_along_axis(const TriangleSurface& surface, const Vec3& axis
                                 const Vec3& up, const std::vector<PointValue>& axial_points,
                                 const LimbTubeSpec& spec);
 
-// The same on a body's leg: its axis (PartFrame, body_measurements.h) and its measuring
-// points (body/leg_measuring_points.h). Throws BodyMeasureError saying what cannot be found.
+// A line along a leg of a body: through the centroids of the leg's sections (normal to its own
+// axis, body_measurements.h's PartFrame) at two of its measuring points (body/
+// leg_measuring_points.h), and every measuring point's axial coordinate along it.
+struct LegLine {
+  Vec3 point_m = Vec3::Zero();    // the centroid at the lower point
+  Vec3 up = Vec3::UnitZ();        // unit, up the leg
+  std::vector<PointValue> axial;  // up . x of each measuring point's place on the leg's axis
+  // The axial coordinate of a point and offset; throws std::invalid_argument naming `entry`
+  // when the point is not found on the leg.
+  double axial_at(const LimbTubeEnd& end, const std::string& entry) const;
+  Vec3 at(double axial_m) const { return point_m + (axial_m - up.dot(point_m)) * up; }
+};
+// Leg `side` (0 left, 1 right) through its points `low` and `high` (B and G span a stocking).
+// Throws BodyMeasureError when a section it needs misses the leg.
+LegLine leg_line(const TriangleSurface& surface, const BodyMeasurements& body, int side,
+                 const std::string& low, const std::string& high);
+
+// The same on a body's leg, along leg_line through the From and To points. Throws
+// BodyMeasureError saying what cannot be found.
 LimbTubeCut cut_tube_to_leg(const TriangleSurface& surface, const BodyMeasurements& body,
                             const LimbTubeSpec& spec);
 

@@ -15,10 +15,12 @@ namespace tightfit {
 
 namespace {
 
-// Constraints/Held groups and Fixed groups on the garment's vertex groups.
+// Constraints/Held groups and Fixed groups on the garment's vertex groups. With `no_direction`,
+// held groups with no direction to hold along are left out and it is set, instead of refused.
 std::vector<VertexConstraint> make_constraints(const ConstraintSettings& settings,
                                                const SimulationMesh& mesh, const ScenarioBody& body,
-                                               const std::optional<GarmentLine>& line) {
+                                               const std::optional<GarmentLine>& line,
+                                               bool* no_direction = nullptr) {
   std::vector<VertexConstraint> constraints;
   try {
     if (!settings.held_groups.empty()) {
@@ -26,12 +28,14 @@ std::vector<VertexConstraint> make_constraints(const ConstraintSettings& setting
       const std::optional<Vec3> direction = settings.held_direction ? settings.held_direction
                                             : line                  ? line->axis
                                                                     : body.axis();
-      if (!direction)
+      if (!direction && no_direction)
+        *no_direction = true;
+      else if (!direction)
         throw std::invalid_argument("Held direction = axis, but the body (" + body.describe() +
                                     ") has no axis and the garment is not cut along one: give a "
                                     "direction x,y,z");
       for (const std::string& group : settings.held_groups)
-        constraints.push_back(held_along(mesh, group, *direction));
+        if (direction) constraints.push_back(held_along(mesh, group, *direction));
     }
     for (const std::string& group : settings.fixed_groups)
       constraints.push_back(fixed_group(mesh, group));
@@ -121,9 +125,17 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   p.friction_coefficient = parameters.friction_coefficient;
   p.tangential_stiffness_Pa_per_m =
       parameters.tangential_penalty_ratio * p.contact_stiffness_Pa_per_m;
-  p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line);
+  // A placement that puts the garment on a line of the body (a tube on a leg's line) gives the
+  // line Held direction = axis holds along: the constraints are made again after it, and a
+  // direction not found before it is refused only if the placement gives none either.
+  const bool cut_along_line = s.garment_line.has_value();
+  bool no_direction = false;
+  p.constraints =
+      make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line, &no_direction);
   p.gravity_m_per_s2 = -parameters.protocol.gravity_m_per_s2 * parameters.protocol.up.normalized();
   s.start_positions_m = parameters.placement.place(s);
+  if ((!cut_along_line && s.garment_line) || no_direction)
+    p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line);
   check_start(s, s.start_positions_m);
   return scenario;
 }

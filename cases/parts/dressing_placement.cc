@@ -6,6 +6,7 @@
 #include "bodies/panel_wrap.h"
 #include "bodies/surface_return.h"
 #include "cases/coarse_dressing.h"
+#include "cases/dressing_frame.h"
 #include "cases/failed_dressing_output.h"
 #include "cases/parts/part_entries.h"
 #include "cases/scenario.h"
@@ -73,19 +74,36 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
       "the panels unsewn on an elliptic cylinder round an axis, sewn onto the body by seam "
       "springs while the body grows from a shrunk start (docs/dressing.md).";
   e.declare_parameters = [](ParameterTree& prm) {
-    prm.declare_vector("Centre", "0,0,0",
-                       "A point on the axis, and the point the body is scaled about (m).");
-    prm.declare_vector("Axis", "0,0,1", "Direction of the axis the panels are wrapped round (-).");
-    prm.declare_vector("Front", "0,-1,0",
-                       "The body's front, the direction of angle 0 round the axis (-); angles "
-                       "grow towards Axis x Front (the body's left for z up and front -y).");
-    prm.declare_double("Semi-axis side", 0.15, 0, ParameterTree::unbounded,
-                       "Semi-axis of the elliptic cylinder along Axis x Front (m).");
-    prm.declare_double("Semi-axis front", 0.15, 0, ParameterTree::unbounded,
-                       "Semi-axis of the elliptic cylinder along Front (m).");
-    prm.declare_double("Hem height", 0, -ParameterTree::unbounded, ParameterTree::unbounded,
-                       "Where each panel's lowest point goes along the axis from Centre (m); "
-                       "pattern y runs up the axis from there.");
+    // The frame (docs/dressing.md, "The frame from the landmarks"): the torso's own by default,
+    // numbers for a body without landmarks (a cylinder).
+    prm.declare_text("Centre", "torso",
+                     "A point on the axis, and the point the body is scaled about: three numbers "
+                     "x,y,z (m), 'torso' for the torso axis's point at the crotch, or 'torso at "
+                     "LINE' for its point at a line of the torso (crotch, hips, waist, "
+                     "under-bust, bust, armpit, neck base), from the body's landmarks.");
+    prm.declare_text("Axis", "torso",
+                     "Direction of the axis the panels are wrapped round: three numbers x,y,z "
+                     "(-), 'torso' for the torso's axis (the line through the centroids of its "
+                     "sections, upwards), or 'vertical' for the body's up (z, as Body/Mesh/Up "
+                     "axis turned it).");
+    prm.declare_text("Front", "torso",
+                     "The body's front, the direction of angle 0 round the axis: three numbers "
+                     "x,y,z (-), or 'torso' for the torso's front; angles grow towards Axis x "
+                     "Front (the body's left for z up and front -y).");
+    prm.declare_text("Semi-axis side", "bust + 0.01",
+                     "Semi-axis of the elliptic cylinder along Axis x Front: METRES, or 'LINE + "
+                     "METRES' with LINE one of hips, waist, under-bust, bust: the torso's "
+                     "section at that girth line shrunk to Start scale (its largest distance "
+                     "from the axis that way, times Start scale) plus METRES (m).");
+    prm.declare_text("Semi-axis front", "bust + 0.01",
+                     "Semi-axis of the elliptic cylinder along Front: METRES, or 'LINE + METRES' "
+                     "as Semi-axis side, read along Front (m).");
+    prm.declare_text("Hem height", "armpit - 0.35",
+                     "Where each panel's lowest point goes along the axis from Centre: METRES, or "
+                     "'LINE + METRES' / 'LINE - METRES' from a line of the torso (crotch, hips, "
+                     "waist, under-bust, bust, armpit: the lower armpit, neck base), its height "
+                     "along the axis from Centre plus METRES (m); pattern y runs up the axis from "
+                     "there.");
     prm.declare_text("Panel angles", "",
                      "Where each panel's middle goes round the axis: 'PANEL:DEGREES, ...' from "
                      "Front; empty: panel k of n at 360 k / n degrees.");
@@ -121,20 +139,12 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
                        "spring/Slide damping), 1/s; 0: off.");
   };
   e.parse = [](ParameterTree& prm) -> PlacementMaker {
-    PanelWrap wrap;
-    wrap.centre_m = prm.get_vector("Centre");
-    wrap.axis = prm.get_vector("Axis");
-    wrap.front = prm.get_vector("Front");
-    wrap.semi_axis_side_m = prm.get_double("Semi-axis side");
-    wrap.semi_axis_front_m = prm.get_double("Semi-axis front");
-    wrap.hem_height_m = prm.get_double("Hem height");
-    if (!(wrap.semi_axis_side_m > 0 && wrap.semi_axis_front_m > 0))
-      throw std::invalid_argument("Semi-axis side and Semi-axis front must be positive (m)");
-    if (!(wrap.axis.norm() > 0)) throw std::invalid_argument("Axis must not be zero");
+    const DressingFrameSpec frame = parse_dressing_frame(
+        prm.get("Centre"), prm.get("Axis"), prm.get("Front"), prm.get("Semi-axis side"),
+        prm.get("Semi-axis front"), prm.get("Hem height"));
     const std::map<std::string, double> angles_deg = parse_angles(prm.get_list("Panel angles"));
     DressingSettings settings;
-    settings.centre_m = wrap.centre_m;
-    if (prm.get("Scale about") == "axis") settings.scale_axis = wrap.axis;
+    const bool scale_about_axis = prm.get("Scale about") == "axis";
     settings.start_scale = prm.get_double("Start scale");
     read_dressing_frames(prm, settings);
     settings.seam_stiffness_factor = prm.get_double("Seam stiffness factor");
@@ -150,7 +160,14 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
           "Coarse slide damping needs a Coarse net force tolerance above 0 (the end of the "
           "slide is read on the net force limit)");
     PlacementMaker dress_here = [=](const Scenario& scenario) {
-      PanelWrap placed = wrap;
+      PanelWrap placed;
+      try {
+        placed = dressing_frame_on_body(frame, scenario, settings.start_scale);
+      } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(std::string("Placement/Dressing: ") + error.what());
+      }
+      std::printf("  dressing frame: %s\n", describe_dressing_frame(frame, placed).c_str());
+      std::fflush(stdout);
       const std::vector<Panel>& panels = scenario.garment.panels;
       for (std::size_t p = 0; p < panels.size(); ++p) {
         double degrees = 360.0 * double(p) / double(panels.size());
@@ -174,6 +191,8 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
           wrap_panels_round_axis(scenario.garment, scenario.mesh, placed);
       try {
         DressingSettings writing = settings;
+        writing.centre_m = placed.centre_m;
+        if (scale_about_axis) writing.scale_axis = placed.axis;
         write_failed_dressing_to(scenario.parameters.output, writing);
         const DressingResult dressed = backend_registry().dressing_stage().dress(
             scenario.problem, scenario.garment, open, writing);

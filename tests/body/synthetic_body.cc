@@ -27,8 +27,8 @@ Mesh to_mesh(const TriangleSurface& s) {
 
 }  // namespace
 
-TriangleSurface elliptic_cylinder(const Vec3& base, const Vec3& axis, const Vec3& across,
-                                  double length, double a, double b, int n) {
+TriangleSurface elliptic_frustum(const Vec3& base, const Vec3& axis, const Vec3& across,
+                                 double length, double a0, double b0, double a1, double b1, int n) {
   const Vec3 w = axis.normalized();
   const Vec3 u = (across - across.dot(w) * w).normalized();
   const Vec3 v = w.cross(u);
@@ -36,6 +36,7 @@ TriangleSurface elliptic_cylinder(const Vec3& base, const Vec3& axis, const Vec3
   for (int end = 0; end < 2; ++end)
     for (int i = 0; i < n; ++i) {
       const double t = 2 * pi * i / n;
+      const double a = end ? a1 : a0, b = end ? b1 : b0;
       s.vertices_m.push_back(base + end * length * w + a * std::cos(t) * u + b * std::sin(t) * v);
     }
   s.vertices_m.push_back(base);
@@ -49,6 +50,11 @@ TriangleSurface elliptic_cylinder(const Vec3& base, const Vec3& axis, const Vec3
     s.triangles.push_back({top, n + i, n + j});
   }
   return s;
+}
+
+TriangleSurface elliptic_cylinder(const Vec3& base, const Vec3& axis, const Vec3& across,
+                                  double length, double a, double b, int n) {
+  return elliptic_frustum(base, axis, across, length, a, b, a, b, n);
 }
 
 TriangleSurface sphere(const Vec3& centre, double r, int n_around, int n_rings) {
@@ -109,16 +115,32 @@ double SyntheticPerson::armpit_z(double angle_deg) {
   return joint_z - s * std::cos(t) - arm_r * std::sin(t);
 }
 
+Vec3 SyntheticLegs::up(int side) const {
+  const double t = tilt_deg * pi / 180;
+  return Vec3((side == 0 ? -1 : 1) * std::sin(t), 0, std::cos(t));
+}
+
+Vec3 SyntheticLegs::foot(int side) const {
+  const double t = tilt_deg * pi / 180;
+  return Vec3((side == 0 ? 1 : -1) * (top_x + top_z * std::tan(t)), 0, 0);
+}
+
 TriangleSurface synthetic_person(double angle_deg, bool legs) {
+  return synthetic_person(angle_deg, SyntheticLegs{}, legs);
+}
+
+TriangleSurface synthetic_person(double angle_deg, const SyntheticLegs& leg, bool legs) {
   using P = SyntheticPerson;
   const double t = angle_deg * pi / 180;
   std::vector<TriangleSurface> parts;
   parts.push_back(elliptic_cylinder(Vec3(0, 0, P::crotch_m), Vec3::UnitZ(), Vec3::UnitX(),
                                     1.40 - P::crotch_m, P::torso_a, P::torso_b, 256));
   if (legs)
-    for (const double x : {0.09, -0.09})
-      parts.push_back(elliptic_cylinder(Vec3(x, 0, 0), Vec3::UnitZ(), Vec3::UnitX(), 0.85, P::leg_r,
-                                        P::leg_r, 128));
+    for (const int side : {0, 1}) {
+      const double length = leg.top_z / leg.up(side).z();
+      parts.push_back(elliptic_frustum(leg.foot(side), leg.up(side), Vec3::UnitX(), length,
+                                       leg.foot_r, leg.foot_r, leg.top_r, leg.top_r, 128));
+    }
   parts.push_back(
       elliptic_cylinder(Vec3(0, 0, 1.35), Vec3::UnitZ(), Vec3::UnitX(), 0.17, 0.05, 0.05, 64));
   parts.push_back(sphere(Vec3(0, 0, 1.55), 0.1, 64, 32));

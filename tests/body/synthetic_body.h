@@ -14,6 +14,9 @@ namespace tightfit::testing {
 // ends; its triangles face outwards.
 TriangleSurface elliptic_cylinder(const Vec3& base, const Vec3& axis, const Vec3& across,
                                   double length, double a, double b, int n);
+// The same tapering from semi-axes a0, b0 at `base` to a1, b1 at the other end.
+TriangleSurface elliptic_frustum(const Vec3& base, const Vec3& axis, const Vec3& across,
+                                 double length, double a0, double b0, double a1, double b1, int n);
 // A sphere as a UV mesh, its poles on the z axis through `centre`.
 TriangleSurface sphere(const Vec3& centre, double radius, int n_around, int n_rings);
 // The union of closed surfaces (CGAL::Polygon_mesh_processing::corefine_and_compute_union).
@@ -31,5 +34,17 @@ struct SyntheticPerson {
   static double armpit_z(double arm_angle_deg);
 };
 TriangleSurface synthetic_person(double arm_angle_deg, bool legs = true);
+
+// The legs as (circular) frusta from the floor z = 0 to z = top_z, their axes tilted
+// `tilt_deg` outwards from the vertical in the plane y = 0, passing x = +-top_x at z = top_z;
+// radius foot_r at the floor, top_r at the top. The defaults are synthetic_person's cylinders.
+struct SyntheticLegs {
+  double tilt_deg = 0.0, foot_r = SyntheticPerson::leg_r, top_r = SyntheticPerson::leg_r;
+  double top_x = 0.09, top_z = 0.85;
+  Vec3 up(int side) const;    // the axis of leg `side` (0 left at +x, 1 right), unit, upwards
+  Vec3 foot(int side) const;  // the axis's point at the floor
+};
+TriangleSurface synthetic_person(double arm_angle_deg, const SyntheticLegs& legs,
+                                 bool legs_present = true);
 
 }  // namespace tightfit::testing

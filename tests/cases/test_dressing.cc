@@ -37,6 +37,7 @@ const double rest_radius_45T_m = 2 * 0.1878 / (2 * M_PI);
 void dressing_case(CaseFile& file, double circle_m, const std::vector<std::string>& more = {}) {
   file.read(source_dir + "/cases/cylinder_45T.prm", {"Output/Write VTU=false"});
   file.set("Placement/Kind=dressing");
+  file.set("Placement/Dressing/Centre=0,0,0");
   file.set("Placement/Dressing/Axis=1,0,0");
   file.set("Placement/Dressing/Front=0,-1,0");
   file.set(testing::setting("Placement/Dressing/Semi-axis side", circle_m));
