@@ -96,7 +96,7 @@ class FemBackend::Implementation {
                                 problem.law->stiffness_scale()),
                 problem.body, comm_),
         contact_(pattern_, problem_, parameters),
-        held_turn_(pattern_) {
+        held_turn_(pattern_, uses_cg(parameters.linear_solver)) {
     // Every vertex held along one direction: the mean turn about it is held too
     // (held_turn_system.h).
     newton_.set_held_turn(&held_turn_);
@@ -153,7 +153,7 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   const NewtonSolver::Assembler assemble = [this, &step](const DofVector& x, bool with_tangent) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
                        step.gravity_on, system_);
-    held_turn_.project_residual(x, system_);
+    held_turn_.project_residual(x, with_tangent, system_);
   };
   newton_.set_energy(
       [this, &step](const DofVector& x) {

@@ -2,14 +2,17 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace tightfit {
 
-HeldTurnSystem::HeldTurnSystem(const PatternMesh& pattern)
-    : pattern_(pattern), turn_(pattern.constraints, pattern.n_vertices()) {}
+HeldTurnSystem::HeldTurnSystem(const PatternMesh& pattern, bool symmetric)
+    : pattern_(pattern), symmetric_(symmetric), turn_(pattern.constraints, pattern.n_vertices()) {}
 
-void HeldTurnSystem::project_residual(const DofVector& x, NewtonSystem& system) {
+void HeldTurnSystem::project_residual(const DofVector& x, bool with_tangent, NewtonSystem& system) {
   if (!active()) return;
   const dealii::AffineConstraints<double>& constraints = system.constraints;
   // The centre of the nodes' rest areas, over every rank.
@@ -60,7 +63,35 @@ void HeldTurnSystem::project_residual(const DofVector& x, NewtonSystem& system) 
   inertia_m4_ = field_ * border_;
   if (!(inertia_m4_ > 0.0)) return;
   // rhs = -R loses M t (t.(-R)) / I: afterwards t.rhs = 0 (t . C^T R = (C t) . R = t . R).
-  system.rhs.add(-(field_ * system.rhs) / inertia_m4_, border_);
+  const double lambda = -(field_ * system.rhs) / inertia_m4_;
+  system.rhs.add(lambda, border_);
+  if (!with_tangent || symmetric_) return;
+  // The reaction lambda M t turns with the nodes: d(lambda w_i a x (x_i - c))/dx_i =
+  // lambda w_i [a]x (the centre's own motion, a translation the body resists, left out). It joins
+  // the tangent of R - lambda b through C: K_c -= lambda C^T W [a]x C.
+  Mat3 cross;
+  const Vec3& a = turn_.axis();
+  cross << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
+  for (const int node : pattern_.owned_nodes) {
+    const DofTriple& dofs = pattern_.carrier(node);
+    std::array<std::vector<std::pair<dealii::types::global_dof_index, double>>, 3> free;
+    for (int c = 0; c < 3; ++c) {
+      if (!constraints.is_constrained(dofs[c]))
+        free[c].emplace_back(dofs[c], 1.0);
+      else
+        for (const auto& [j, weight] : *constraints.get_constraint_entries(dofs[c]))
+          free[c].emplace_back(j, weight);
+    }
+    const double scale = -lambda * pattern_.node_contact_area_m2[node];
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 3; ++d) {
+        if (cross(c, d) == 0.0) continue;
+        for (const auto& [i, wi] : free[c])
+          for (const auto& [j, wj] : free[d])
+            system.tangent.add(i, j, scale * cross(c, d) * wi * wj);
+      }
+  }
+  system.tangent.compress(dealii::VectorOperation::add);
 }
 
 void HeldTurnSystem::constrain_increment(NewtonSystem& system, const Solve& solve) {

@@ -29,13 +29,14 @@ namespace tightfit {
 
 class HeldTurnSystem {
  public:
-  explicit HeldTurnSystem(const PatternMesh& pattern);
+  // `symmetric`: the tangent must stay symmetric (CG), so the reaction's own stiffness is left out.
+  HeldTurnSystem(const PatternMesh& pattern, bool symmetric);
 
   bool active() const { return turn_.active(); }
   const HeldTurn& turn() const { return turn_; }
   // At positions x: the border b and the turn field t on the free DoFs (from
   // system.constraints), then system.rhs loses the turn's reaction (see above). Collective.
-  void project_residual(const DofVector& x, NewtonSystem& system);
+  void project_residual(const DofVector& x, bool with_tangent, NewtonSystem& system);
   // system.increment holds K^-1 rhs; `solve(b, z)` solves K z = b with the same tangent. Leaves
   // the bordered system's increment in system.increment. Collective.
   using Solve = std::function<void(const dealii::PETScWrappers::MPI::Vector& b,
@@ -46,6 +47,7 @@ class HeldTurnSystem {
 
  private:
   const PatternMesh& pattern_;
+  bool symmetric_;
   HeldTurn turn_;
   dealii::PETScWrappers::MPI::Vector border_;  // b = C^T M t, m^3 (area times length)
   dealii::PETScWrappers::MPI::Vector field_;   // t on the free DoFs, m
