@@ -16,7 +16,9 @@
 // The residual Newton's stop rule and line search read is R with the turn's reaction removed,
 // R - M t (t.R) / I: the mass-spring backend's remove_from_forces through C^T. Its zero is an
 // equilibrium up to a torque about the axis, the grip's, which vanishes at the free tube's
-// equilibrium.
+// equilibrium. With an unsymmetric tangent (any solver but CG) the reaction's turning with the
+// nodes, -lambda M [a]x, joins K (measured on the stocking: it changes no iteration count).
+// The rigid-motion pin (rigid_motion_pin.h) leaves this turn alone.
 #pragma once
 
 #include "core/held_turn.h"
