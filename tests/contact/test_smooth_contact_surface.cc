@@ -186,5 +186,38 @@ TEST(SmoothContactSurface, ContinuousBetweenTheThighs) {
   EXPECT_LT(worst, 1e-6);
 }
 
+// On the MakeHuman female's inner lower leg, where the body's faces are large against the leg's
+// radius and the blend holds quadrics turned 90 to 120 degrees from the surface's normal (their
+// facing factor between 0 and 1): the gap is C1, its second differences along three lines
+// through a point on the surface (2 cm each, steps of 1 micrometre) bounded by the surface's
+// curvature and the blend. Measured: at most 261 1/m. A facing factor read from the flat closest point's
+// interpolated normal, whose derivative jumps where that point passes from a face onto an edge,
+// put kinks into the gap (the slope along y fell by 0.013 within 2 micrometres here: a second
+// difference of 1.9e6 1/m on this line); bound 400 1/m.
+TEST(SmoothContactSurface, GapIsC1OverTheLowerLeg) {
+  MeshBodyOptions options;
+  options.import.up_axis = "+y";
+  options.contact_surface = MeshBodyOptions::ContactSurface::smooth;
+  const auto body = load_mesh_body(
+      std::string(TIGHTFIT_BODIES_DIR) + "/makehuman_default_female_body_m.obj", options);
+  const Vec3 near(0.134, -0.012, -0.633);
+  const SurfacePoint at = body->query(near);
+  const Vec3 x = at.closest_point_m;
+  const double h = 1e-6;
+  double worst = 0;
+  for (const Vec3& e : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ())}) {
+    double before = body->query(x - 0.01 * e).signed_distance_m;
+    double middle = body->query(x + (h - 0.01) * e).signed_distance_m;
+    for (int k = 2; k <= 20000; ++k) {
+      const double after = body->query(x + (k * h - 0.01) * e).signed_distance_m;
+      worst = std::max(worst, std::abs(after - 2 * middle + before) / (h * h));
+      before = middle;
+      middle = after;
+    }
+  }
+  std::printf("over the lower leg: second differences of the gap within %.3g 1/m\n", worst);
+  EXPECT_LT(worst, 400.0);
+}
+
 }  // namespace
 }  // namespace tightfit
