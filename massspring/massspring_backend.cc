@@ -613,7 +613,7 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   // exactly from then on: a slow mode still moving under the early stops (the stocking at half
   // resolution, 16 mm x 30 mm, sliding round the ankle) keeps reopening the gaps each update
   // closes, where the exact rounds close them 25-fold per update (docs/stocking.md).
-  constexpr double inexact_gap_fall = 0.5;
+  constexpr double inexact_gap_fall = 0.25;
   double last_update_penetration_m = std::numeric_limits<double>::infinity();
   rounds.read_gap = [&](bool update, int* count) {
     const double penetration_m = contact_penetration_m(update, count);
