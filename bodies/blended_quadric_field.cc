@@ -204,9 +204,9 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   const int* listed = cell_vertices_.data() + cell_start_[cell];
   const int* listed_end = cell_vertices_.data() + cell_start_[cell + 1];
   if (candidates) listed = candidates->data(), listed_end = listed + candidates->size();
-  // The first pass: every vertex whose support holds x and whose normal is not turned away from
-  // the flat normal m0 by more than the screen's band, with its Wendland weight w and the
-  // weight u = w F it gives the facing normal m (eq. F1 in the header), and grad u
+  // The first pass: every vertex whose support holds x, with its Wendland weight w and the
+  // weight u = w F it gives the facing normal m (eq. F1 in the header; F = 0 for a vertex
+  // turned more than 160 degrees from the flat normal m0), and grad u
   // = F grad w + w F' grad b, grad b = (dm0/dx)^T n_i / width, whose Hessian F H w
   // + F' (grad w grad b^T + grad b grad w^T) + w F'' grad b grad b^T is summed below (m0's
   // second derivative left out: it acts only on vertices 140 to 160 degrees from m0, the far
@@ -222,7 +222,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     if (delta.squaredNorm() > reach[i].beyond_squared_m2) continue;
     const double s = support_m_[i], distance = delta.norm(), r = distance / s;
     const Smoothstep F = smoothstep((n_[i].dot(m0) - screen_cosine_out) / screen_width);
-    if (!(r < 1.0 && F.value > 0.0)) continue;
+    if (!(r < 1.0)) continue;
     // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
     // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
     const double q = 1.0 - r;

@@ -47,9 +47,8 @@ BruteForce brute_force(const BlendedQuadricField& field, const Vec3& x, const Ve
   const Vec3 m = v.normalized();
   double weighted = 0.0;
   for (int i = 0; i < field.vertex_count(); ++i) {
-    const double screen = smoothstep((field.normal(i).dot(m0) - cos160) / (cos140 - cos160));
     const double w = wendland(i) * smoothstep(2.0 * (field.normal(i).dot(m) + 0.5));
-    if (!(w > 0 && screen > 0)) continue;
+    if (!(w > 0)) continue;
     const Vec3 delta = x - field.position(i);
     const double d =
         field.normal(i).dot(delta) + 0.5 * delta.dot(field.curvature(i) * delta) + field.shift_m(i);
