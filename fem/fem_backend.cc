@@ -9,6 +9,7 @@
 #include "fem/contact_rounds.h"
 #include "fem/fem_constraints.h"
 #include "fem/fem_state.h"
+#include "fem/held_turn_system.h"
 #include "fem/membrane_assembly.h"
 #include "fem/mesh_part.h"
 #include "fem/newton_solver.h"
@@ -94,7 +95,11 @@ class FemBackend::Implementation {
                 tension_scale_N(pattern_.mean_rest_edge_m, pattern_.rest_area_m2,
                                 problem.law->stiffness_scale()),
                 problem.body, comm_),
-        contact_(pattern_, problem_, parameters) {
+        contact_(pattern_, problem_, parameters),
+        held_turn_(pattern_, uses_cg(parameters.linear_solver)) {
+    // Every vertex held along one direction: the mean turn about it is held too
+    // (held_turn_system.h).
+    newton_.set_held_turn(&held_turn_);
     // Frictionless, a step the line search cut is solved once more on the contact set it
     // predicts (docs/backends.md, "Newton's line search"); with friction only when the case asks
     // for predictions: the stick-slip set predicted after a cut step sent the partly slipping
@@ -127,6 +132,7 @@ class FemBackend::Implementation {
   MembraneAssembly assembly_;
   NewtonSolver newton_;
   ContactRounds contact_;
+  HeldTurnSystem held_turn_;
   NewtonSystem system_;
   DofVector x_;                // this rank's DoFs and ghosts: the current positions, m
   OwnedSurfaceOutput output_;  // of the last step, this rank's vertices only
@@ -147,6 +153,7 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   const NewtonSolver::Assembler assemble = [this, &step](const DofVector& x, bool with_tangent) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
                        step.gravity_on, system_);
+    held_turn_.project_residual(x, with_tangent, system_);
   };
   newton_.set_energy(
       [this, &step](const DofVector& x) {

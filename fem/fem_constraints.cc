@@ -1,5 +1,6 @@
 #include "fem/fem_constraints.h"
 
+#include "core/held_turn.h"
 #include "fem/freed_memory.h"
 #include "fem/rigid_motion_pin.h"
 
@@ -67,9 +68,12 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
                            constraints);
   // The pins are chosen among every vertex alike on every rank: from the whole garment's
   // positions and rank 0's constraints (held only while they are chosen).
+  // The turn about the held direction, when every vertex is held along it, is held by the
+  // bordered Newton system instead (held_turn_system.h).
+  const HeldTurn held_turn(pattern.constraints, pattern.n_vertices());
   const RigidMotionPin pin = rigid_motion_pin(
       *problem.body, positions_m, ConstrainedDirections(pattern.constraints, pattern.n_vertices()),
-      problem.friction_coefficient > 0.0);
+      problem.friction_coefficient > 0.0, held_turn.active() ? &held_turn.axis() : nullptr);
   for (const RigidMotionPin::Pin& p : pin.pins) {
     const int node = pattern.find_node(p.vertex);
     if (node >= 0) constrain_directions(pattern.carrier(node), p.directions, constraints);

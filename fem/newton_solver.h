@@ -7,6 +7,7 @@
 #include "bodies/rigid_body.h"
 #include "core/backend.h"
 #include "fem/fem_parameters.h"
+#include "fem/held_turn_system.h"
 #include "fem/newton_system.h"
 #include "fem/pattern_mesh.h"
 #include "fem/petsc_linear_solver.h"
@@ -82,6 +83,11 @@ class NewtonSolver {
   // The line search's first merit (see solve()); without it, ||R||_2 alone.
   // With `defect`, how far R is from the potential's gradient (MembraneAssembly::
   // potential_defect_N), N: the potential judges steps only where R is well above it.
+  // The held turn (held_turn_system.h; may be null or inactive): each linear solve then gives
+  // the bordered system's increment, whose mean turn about the held axis is zero. The assembler
+  // projects the residual itself (HeldTurnSystem::project_residual).
+  void set_held_turn(HeldTurnSystem* held_turn) { held_turn_ = held_turn; }
+
   void set_energy(Energy energy, Energy defect = {}) {
     energy_ = std::move(energy);
     defect_ = std::move(defect);
@@ -120,6 +126,7 @@ class NewtonSolver {
   MPI_Comm comm_;
   std::unique_ptr<PetscLinearSolver> linear_solver_;
   ContactSetPredictor predictor_;
+  HeldTurnSystem* held_turn_ = nullptr;
   Energy energy_;
   Energy defect_;
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's

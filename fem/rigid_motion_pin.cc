@@ -26,7 +26,8 @@ Motion rigid_velocities(const Vec3& x, const Vec3& c, double L) {
 }  // namespace
 
 RigidMotionPin rigid_motion_pin(const RigidBody& body, const std::vector<Vec3>& positions_m,
-                                const ConstrainedDirections& constrained, bool friction) {
+                                const ConstrainedDirections& constrained, bool friction,
+                                const Vec3* held_turn_axis) {
   RigidMotionPin result;
   const int n = static_cast<int>(positions_m.size());
   if (friction || n == 0) return result;
@@ -49,6 +50,13 @@ RigidMotionPin rigid_motion_pin(const RigidBody& body, const std::vector<Vec3>& 
     add(body.query(positions_m[w]).outward_normal);
     if (w < constrained.size())
       for (const Vec3& d : constrained.directions(w)) add(d);
+  }
+  // The held turn restrains the unit turn about its axis (the last three coordinates, scaled by
+  // 1/L as in rigid_velocities) as much as the whole garment's restraints do.
+  if (held_turn_axis) {
+    Eigen::Matrix<double, 6, 1> turn = Eigen::Matrix<double, 6, 1>::Zero();
+    turn.tail<3>() = held_turn_axis->normalized();
+    C += C.trace() * turn * turn.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(C);
   // Free: an eigenvalue at round-off against the largest (exact symmetries give 1e-16 of it).

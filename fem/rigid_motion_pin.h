@@ -32,7 +32,10 @@ struct RigidMotionPin {
 // of turn or slide), held along what those motions do to it; a further vertex is pinned only
 // when one cannot stop them all (a sphere's three turns). With friction (`friction` true) the
 // anchors hold every rigid motion where the garment touches, so nothing is pinned.
+// `held_turn_axis` (may be null): the garment's mean turn about this axis through its centroid is
+// held already (fem/held_turn_system.h), so it is not free and gets no pin.
 RigidMotionPin rigid_motion_pin(const RigidBody& body, const std::vector<Vec3>& positions_m,
-                                const ConstrainedDirections& constrained, bool friction);
+                                const ConstrainedDirections& constrained, bool friction,
+                                const Vec3* held_turn_axis = nullptr);
 
 }  // namespace tightfit

@@ -80,6 +80,22 @@ TEST(RigidMotionPin, HeldEndsLeaveOnlyTheTurn) {
   EXPECT_FALSE(held.constrained(pin.pins[0].vertex));
 }
 
+// Every vertex held along the axis leaves the turn about it free; when that turn is held by the
+// bordered Newton system (fem/held_turn_system.h) no rigid motion is free.
+TEST(RigidMotionPin, AHeldTurnIsNotPinned) {
+  const Cylinder cylinder(Vec3::Zero(), kZ, 0.05);
+  const std::vector<Vec3> x = tube_points([](double) { return 0.05; });
+  VertexConstraint all;
+  all.direction = kZ;
+  for (int j = 0; j < 60; ++j) all.vertices.push_back(j);
+  const ConstrainedDirections held({all}, 60);
+  // The turn is found free (every vertex being held, none is left to pin it with).
+  EXPECT_EQ(rigid_motion_pin(cylinder, x, held, false).n_free_motions, 1);
+  const RigidMotionPin held_turn = rigid_motion_pin(cylinder, x, held, false, &kZ);
+  EXPECT_EQ(held_turn.n_free_motions, 0);
+  EXPECT_TRUE(held_turn.pins.empty());
+}
+
 TEST(RigidMotionPin, ConeLeavesTheTurn) {
   ConeOptions options;
   options.half_angle_deg = 10;
