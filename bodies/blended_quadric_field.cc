@@ -204,9 +204,9 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   const int* listed = cell_vertices_.data() + cell_start_[cell];
   const int* listed_end = cell_vertices_.data() + cell_start_[cell + 1];
   if (candidates) listed = candidates->data(), listed_end = listed + candidates->size();
-  // The first pass: every vertex whose support holds x, with its Wendland weight w and the
-  // weight u = w F it gives the facing normal m (eq. F1 in the header; F = 0 for a vertex
-  // turned more than 160 degrees from the flat normal m0), and grad u
+  // The first pass: every vertex whose support holds x and whose normal lies within 160 degrees
+  // of the flat normal m0, with its Wendland weight w and the weight u = w F it gives the
+  // facing normal m (eq. F1 in the header), and grad u
   // = F grad w + w F' grad b, grad b = (dm0/dx)^T n_i / width, whose Hessian F H w
   // + F' (grad w grad b^T + grad b grad w^T) + w F'' grad b grad b^T is summed below (m0's
   // second derivative left out: it acts only on vertices 140 to 160 degrees from m0, the far
@@ -222,7 +222,10 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     if (delta.squaredNorm() > reach[i].beyond_squared_m2) continue;
     const double s = support_m_[i], distance = delta.norm(), r = distance / s;
     const Smoothstep F = smoothstep((n_[i].dot(m0) - screen_cosine_out) / screen_width);
-    if (!(r < 1.0)) continue;
+    // A vertex the screen drops adds nothing: it faces more than 160 degrees from m0, and m
+    // lies within a few degrees of m0 wherever the flat surface has an answer (both are the
+    // surface's normal), beyond the 120 degrees of the facing factor (F3).
+    if (!(r < 1.0 && F.value > 0.0)) continue;
     // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
     // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
     const double q = 1.0 - r;
@@ -254,7 +257,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   //   H rho = 3 rho^5 (dv^T v)(dv^T v)^T - rho^3 (dv^T dv + Q(v)),
   // Q(c) = sum_j (c . n_j) H u_j; Q's three matrices Q_k = sum_j n_jk H u_j are summed once,
   // when some vertex is partly facing.
-  const double rho = 1.0 / length;
+  const double rho = 1.0 / length, rho3 = rho * rho * rho;
   const Vec3 dv_v = dv.transpose() * v;
   std::array<Mat3, 3> Q{Mat3::Zero(), Mat3::Zero(), Mat3::Zero()};
   const auto Q_of = [&](const Vec3& c) -> Mat3 { return c[0] * Q[0] + c[1] * Q[1] + c[2] * Q[2]; };
@@ -272,8 +275,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
           j.w * F.curvature * j.db * j.db.transpose();
       for (int c = 0; c < 3; ++c) Q[c] += n_[j.vertex][c] * hu;
     }
-    H_rho = 3 * std::pow(rho, 5) * dv_v * dv_v.transpose() -
-            std::pow(rho, 3) * (dv.transpose() * dv + Q_of(v));
+    H_rho = 3 * rho3 * rho * rho * dv_v * dv_v.transpose() - rho3 * (dv.transpose() * dv + Q_of(v));
   }
   std::size_t kept = 0;
   for (std::size_t k = 0; k < terms.size(); ++k) {
@@ -287,7 +289,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
       // + w S' H a, H a = 2 H(n_i . m).
       const Smoothstep S = smoothstep(a);
       const Vec3 da = 2.0 * dm_dx.transpose() * n;
-      const Vec3 g_n = dv.transpose() * n, g_rho = -std::pow(rho, 3) * dv_v;
+      const Vec3 g_n = dv.transpose() * n, g_rho = -rho3 * dv_v;
       const Mat3 H_a = 2.0 * (rho * Q_of(n) + g_n * g_rho.transpose() + g_rho * g_n.transpose() +
                               n.dot(v) * H_rho);
       t.turned = static_cast<int>(turned.size());

@@ -21,9 +21,9 @@ const std::string female =
 
 // phi and W at x by the definition (blended_quadric_field.h, eqs. F1 to F3): the facing
 // normal m = v / |v|, v = sum_j w_j F_j n_j, F_j = S((n_j . m0 - cos 160) / (cos 140 - cos 160));
-// then w_i = psi(|x - p_i| / s_i) S(2 (n_i . m + 1/2)), psi(r) = (1 - r)^4 (4 r + 1) for r < 1,
-// S the quintic smoothstep clamped to [0, 1], d_i = n_i . (x - p_i) + (x - p_i)^T K_i (x - p_i)
-// / 2 + c_i, phi = sum w_i d_i / sum w_i.
+// then, for the vertices with F_i > 0, w_i = psi(|x - p_i| / s_i) S(2 (n_i . m + 1/2)), psi(r) = (1
+// - r)^4 (4 r + 1) for r < 1, S the quintic smoothstep clamped to [0, 1], d_i = n_i . (x - p_i) +
+// (x - p_i)^T K_i (x - p_i) / 2 + c_i, phi = sum w_i d_i / sum w_i.
 struct BruteForce {
   double weight_sum = 0.0, phi_m = 0.0;
   int terms = 0;
@@ -47,8 +47,9 @@ BruteForce brute_force(const BlendedQuadricField& field, const Vec3& x, const Ve
   const Vec3 m = v.normalized();
   double weighted = 0.0;
   for (int i = 0; i < field.vertex_count(); ++i) {
+    const double screen = smoothstep((field.normal(i).dot(m0) - cos160) / (cos140 - cos160));
     const double w = wendland(i) * smoothstep(2.0 * (field.normal(i).dot(m) + 0.5));
-    if (!(w > 0)) continue;
+    if (!(w > 0 && screen > 0)) continue;
     const Vec3 delta = x - field.position(i);
     const double d =
         field.normal(i).dot(delta) + 0.5 * delta.dot(field.curvature(i) * delta) + field.shift_m(i);
