@@ -14,6 +14,18 @@ Vec3 any_normal_to(const Vec3& n) {
   return (axis - axis.dot(n) * n).normalized();
 }
 
+// The quintic smoothstep S(u) = u^3 (10 - 15 u + 6 u^2) on [0, 1] (0 below, 1 above), C2,
+// with its first two derivatives.
+struct Smoothstep {
+  double value, slope, curvature;
+};
+Smoothstep smoothstep(double u) {
+  if (u <= 0.0) return {0.0, 0.0, 0.0};
+  if (u >= 1.0) return {1.0, 0.0, 0.0};
+  return {u * u * u * (10 - 15 * u + 6 * u * u), 30 * u * u * (1 - u) * (1 - u),
+          60 * u * (1 - u) * (1 - 2 * u)};
+}
+
 // One vertex's quadric and weight at x.
 // The Hessian of w is alpha I + beta delta delta^T (delta = x - p_i), plus `turned`'s matrix
 // for a vertex the facing factor scales (index into the query's list of them, or -1).
@@ -21,11 +33,15 @@ struct Term {
   int vertex;
   int turned;
   double w;
-  double d;
+  double d = 0.0;
   double alpha, beta;
   Vec3 delta;
-  Vec3 dw;  // grad w
-  Vec3 dd;  // grad d = n + K (x - p)
+  Vec3 dw;                 // grad w
+  Vec3 dd = Vec3::Zero();  // grad d = n + K (x - p)
+  // The screen against the flat normal (F, F', F'') and grad b (below): the weight
+  // u = w F the vertex gives the facing normal.
+  Smoothstep screen;
+  Vec3 db;
 };
 
 }  // namespace
@@ -167,8 +183,8 @@ void BlendedQuadricField::vertices_near(const Vec3& x, double radius_m,
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
 }
 
-BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m,
-                                                         const Mat3& dm_dx,
+BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m0,
+                                                         const Mat3& dm0_dx,
                                                          const std::vector<int>* candidates) const {
   thread_local std::vector<Term> terms_storage;
   thread_local std::vector<Mat3> turned_storage;
@@ -188,6 +204,16 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   const int* listed = cell_vertices_.data() + cell_start_[cell];
   const int* listed_end = cell_vertices_.data() + cell_start_[cell + 1];
   if (candidates) listed = candidates->data(), listed_end = listed + candidates->size();
+  // The first pass: every vertex whose support holds x and whose normal lies within 160 degrees
+  // of the flat normal m0, with its Wendland weight w and the weight u = w F it gives the
+  // facing normal m (eq. F1 in the header), and grad u
+  // = F grad w + w F' grad b, grad b = (dm0/dx)^T n_i / width, whose Hessian F H w
+  // + F' (grad w grad b^T + grad b grad w^T) + w F'' grad b grad b^T is summed below (m0's
+  // second derivative left out: it acts only on vertices 140 to 160 degrees from m0, the far
+  // side of a fold).
+  constexpr double screen_width = screen_cosine_in - screen_cosine_out;
+  Vec3 v = Vec3::Zero();   // sum u_j n_j
+  Mat3 dv = Mat3::Zero();  // its derivative, sum n_j (grad u_j)^T
   for (; listed != listed_end; ++listed) {
     const int i = *listed;
     const Vec3 delta = x - reach[i].centre_m;
@@ -195,54 +221,104 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     // tells so without the root and the division (a margin of 1e-9 keeps the test below exact).
     if (delta.squaredNorm() > reach[i].beyond_squared_m2) continue;
     const double s = support_m_[i], distance = delta.norm(), r = distance / s;
-    // The facing factor: S((n_i . m + 1/2) / (1/2)), S the quintic smoothstep.
-    const double a = 2.0 * (n_[i].dot(m) + 0.5);
-    if (!(r < 1.0 && a > 0.0)) continue;
+    const Smoothstep F = smoothstep((n_[i].dot(m0) - screen_cosine_out) / screen_width);
+    // A vertex the screen drops adds nothing: it faces more than 160 degrees from m0, and m
+    // lies within a few degrees of m0 wherever the flat surface has an answer (both are the
+    // surface's normal), beyond the 120 degrees of the facing factor (F3).
+    if (!(r < 1.0 && F.value > 0.0)) continue;
     // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
     // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
-    const double u = 1.0 - r;
+    const double q = 1.0 - r;
     Term t;
     t.vertex = i;
     t.turned = -1;
     t.delta = delta;
-    t.w = u * u * u * u * (4 * r + 1);
+    t.w = q * q * q * q * (4 * r + 1);
     const double over_s2 = 1.0 / (s * s);
-    t.alpha = -20.0 * over_s2 * u * u * u;
+    t.alpha = -20.0 * over_s2 * q * q * q;
     t.dw = t.alpha * delta;
-    t.beta = distance > 0 ? 60.0 * over_s2 * u * u / (distance * s) : 0.0;
-    if (a < 1.0) {
-      // w <- w S(a): grad (w S) = S grad w + w S' grad a, grad a = 2 (dm/dx)^T n_i; its
-      // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T, the
-      // second derivative of m left out (it only acts where S is between 0 and 1, on vertices
-      // turned 90 to 120 degrees away, far out in the blend).
-      const double S = a * a * a * (10 - 15 * a + 6 * a * a);
-      const double dS = 30 * a * a * (1 - a) * (1 - a), d2S = 60 * a * (1 - a) * (1 - 2 * a);
-      const Vec3 da = 2.0 * dm_dx.transpose() * n_[i];
-      t.turned = static_cast<int>(turned.size());
-      turned.push_back(dS * (t.dw * da.transpose() + da * t.dw.transpose()) +
-                       t.w * d2S * da * da.transpose());
-      t.alpha *= S;
-      t.beta *= S;
-      t.dw = S * t.dw + t.w * dS * da;
-      t.w *= S;
-    }
-    const Vec3 curved = curvature_[i] * delta;
-    t.d = n_[i].dot(delta) + 0.5 * delta.dot(curved) + shift_m_[i];
-    t.dd = n_[i] + curved;
+    t.beta = distance > 0 ? 60.0 * over_s2 * q * q / (distance * s) : 0.0;
+    t.screen = F;
+    t.db = F.value < 1.0 ? Vec3(dm0_dx.transpose() * n_[i] / screen_width) : Vec3::Zero();
+    v += t.w * F.value * n_[i];
+    dv += n_[i] * (F.value * t.dw + t.w * F.slope * t.db).transpose();
     terms.push_back(t);
   }
-  Value v;
+  const double length = v.norm();
+  if (!(length > 0.0)) return Value{};
+  // The facing normal m = v / |v| and dm/dx = (I - m m^T) dv / |v| (eq. F2).
+  const Vec3 m = v / length;
+  const Mat3 dm_dx = (Mat3::Identity() - m * m.transpose()) * dv / length;
+  // The second pass: each weight scaled by the facing factor S(a_i), a_i = 2 (n_i . m + 1/2)
+  // (eq. F3), C2 in x as m is; the vertices turned beyond 120 degrees from m dropped.
+  // The Hessian of n . m for a unit vector n (eq. F4), with rho = 1 / |v|:
+  //   H(n . m) = rho Q(n) + g_n g_rho^T + g_rho g_n^T + (n . v) H rho,
+  //   g_n = dv^T n, g_rho = -rho^3 dv^T v,
+  //   H rho = 3 rho^5 (dv^T v)(dv^T v)^T - rho^3 (dv^T dv + Q(v)),
+  // Q(c) = sum_j (c . n_j) H u_j; Q's three matrices Q_k = sum_j n_jk H u_j are summed once,
+  // when some vertex is partly facing.
+  const double rho = 1.0 / length, rho3 = rho * rho * rho;
+  const Vec3 dv_v = dv.transpose() * v;
+  std::array<Mat3, 3> Q{Mat3::Zero(), Mat3::Zero(), Mat3::Zero()};
+  const auto Q_of = [&](const Vec3& c) -> Mat3 { return c[0] * Q[0] + c[1] * Q[1] + c[2] * Q[2]; };
+  Mat3 H_rho = Mat3::Zero();
+  // Q and H rho from the first pass's weights, before the second pass scales them.
+  if (std::any_of(terms.begin(), terms.end(), [&](const Term& t) {
+        const double a = 2.0 * (n_[t.vertex].dot(m) + 0.5);
+        return a > 0.0 && a < 1.0;
+      })) {
+    for (const Term& j : terms) {
+      const Smoothstep& F = j.screen;
+      const Mat3 hu =
+          F.value * (j.alpha * Mat3::Identity() + j.beta * j.delta * j.delta.transpose()) +
+          F.slope * (j.dw * j.db.transpose() + j.db * j.dw.transpose()) +
+          j.w * F.curvature * j.db * j.db.transpose();
+      for (int c = 0; c < 3; ++c) Q[c] += n_[j.vertex][c] * hu;
+    }
+    H_rho = 3 * rho3 * rho * rho * dv_v * dv_v.transpose() - rho3 * (dv.transpose() * dv + Q_of(v));
+  }
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    Term t = terms[k];
+    const Vec3& n = n_[t.vertex];
+    const double a = 2.0 * (n.dot(m) + 0.5);
+    if (!(a > 0.0)) continue;
+    if (a < 1.0) {
+      // w <- w S(a): grad (w S) = S grad w + w S' grad a, grad a = 2 (dm/dx)^T n_i; its
+      // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T
+      // + w S' H a, H a = 2 H(n_i . m).
+      const Smoothstep S = smoothstep(a);
+      const Vec3 da = 2.0 * dm_dx.transpose() * n;
+      const Vec3 g_n = dv.transpose() * n, g_rho = -rho3 * dv_v;
+      const Mat3 H_a = 2.0 * (rho * Q_of(n) + g_n * g_rho.transpose() + g_rho * g_n.transpose() +
+                              n.dot(v) * H_rho);
+      t.turned = static_cast<int>(turned.size());
+      turned.push_back(S.slope * (t.dw * da.transpose() + da * t.dw.transpose()) +
+                       t.w * S.curvature * da * da.transpose() + t.w * S.slope * H_a);
+      t.alpha *= S.value;
+      t.beta *= S.value;
+      t.dw = S.value * t.dw + t.w * S.slope * da;
+      t.w *= S.value;
+    }
+    const Vec3 curved = curvature_[t.vertex] * t.delta;
+    t.d = n.dot(t.delta) + 0.5 * t.delta.dot(curved) + shift_m_[t.vertex];
+    t.dd = n + curved;
+    terms[kept++] = t;
+  }
+  terms.resize(kept);
+  Value f;
+  f.facing_normal = m;
   double weighted = 0.0;
   for (const Term& t : terms) {
-    v.weight_sum += t.w;
-    v.weight_gradient_per_m += t.dw;
+    f.weight_sum += t.w;
+    f.weight_gradient_per_m += t.dw;
     weighted += t.w * t.d;
   }
-  if (!(v.weight_sum > 0)) return v;
-  const double W = v.weight_sum;
-  v.phi_m = weighted / W;
+  if (!(f.weight_sum > 0)) return f;
+  const double W = f.weight_sum;
+  f.phi_m = weighted / W;
   // grad phi = sum [w_i grad d_i + (d_i - phi) grad w_i] / W.
-  for (const Term& t : terms) v.gradient += (t.w * t.dd + (t.d - v.phi_m) * t.dw) / W;
+  for (const Term& t : terms) f.gradient += (t.w * t.dd + (t.d - f.phi_m) * t.dw) / W;
   // From W phi = S differentiated twice:
   // H phi = sum [(d_i - phi) H w_i + grad w_i (grad d_i - grad phi)^T
   //              + (grad d_i - grad phi) grad w_i^T + w_i K_i] / W,
@@ -250,8 +326,8 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   double h[6] = {0, 0, 0, 0, 0, 0};  // (0,0) (1,1) (2,2) (0,1) (0,2) (1,2)
   double diagonal = 0.0;
   for (const Term& t : terms) {
-    const double off = t.d - v.phi_m, c = off * t.beta;
-    const Vec3 e = t.dd - v.gradient;
+    const double off = t.d - f.phi_m, c = off * t.beta;
+    const Vec3 e = t.dd - f.gradient;
     const Vec3& q = t.delta;
     const Vec3& g = t.dw;
     const Mat3& K = curvature_[t.vertex];
@@ -262,9 +338,9 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     h[3] += c * q[0] * q[1] + g[0] * e[1] + e[0] * g[1] + t.w * K(0, 1);
     h[4] += c * q[0] * q[2] + g[0] * e[2] + e[0] * g[2] + t.w * K(0, 2);
     h[5] += c * q[1] * q[2] + g[1] * e[2] + e[1] * g[2] + t.w * K(1, 2);
-    if (t.turned >= 0) v.hessian_per_m += off * turned[t.turned];
+    if (t.turned >= 0) f.hessian_per_m += off * turned[t.turned];
   }
-  Mat3& H = v.hessian_per_m;
+  Mat3& H = f.hessian_per_m;
   H(0, 0) += h[0] + diagonal;
   H(1, 1) += h[1] + diagonal;
   H(2, 2) += h[2] + diagonal;
@@ -272,7 +348,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   H(0, 2) += h[4], H(2, 0) += h[4];
   H(1, 2) += h[5], H(2, 1) += h[5];
   H /= W;
-  return v;
+  return f;
 }
 
 }  // namespace tightfit

@@ -31,6 +31,13 @@ class BlendedQuadricField {
   static constexpr double support_over_longest_edge = 1.5;
   // Jacobi sweeps that make the field vanish at the vertices (below).
   static constexpr int interpolation_sweeps = 30;
+  // The screen of the facing normal (eq. F1 below): a vertex whose normal lies within 140
+  // degrees of the flat surface's normal adds fully, beyond 160 not at all. On a limb the
+  // vertices within a support turn at most about 120 degrees from each other (the coarse ankle
+  // of MakeHuman's bodies); the other side of a fold (a thigh across the crotch) faces about
+  // 180 degrees away.
+  static constexpr double screen_cosine_in = -0.76604444311897801;   // cos 140 degrees
+  static constexpr double screen_cosine_out = -0.93969262078590832;  // cos 160 degrees
 
   // Fits each vertex's curvature tensor to the positions of its edge neighbours (least squares
   // for n_i . e_j = -e_j^T K_i e_j / 2 over the edges e_j from p_i, K_i in the tangent plane),
@@ -48,13 +55,23 @@ class BlendedQuadricField {
     double phi_m = 0.0;
     Vec3 gradient = Vec3::Zero();       // d phi / dx
     Mat3 hessian_per_m = Mat3::Zero();  // d2 phi / dx2, symmetric
+    Vec3 facing_normal = Vec3::Zero();  // m of (F2), which the facing factors read
   };
-  // The field at x: every vertex whose support holds x adds its quadric. Each weight is also
-  // scaled by the quintic smoothstep of (n_i . m + 1/2) / (1/2), m = `reference_normal` (the
-  // flat surface's interpolated normal at x, with derivative `reference_normal_derivative`): a
-  // vertex whose normal is more than 120 degrees from m adds nothing, one within 90 degrees
-  // adds fully, so the other side of a thin gap (the inner thigh across the crotch) never
-  // enters the blend. The vertices are found in a uniform grid whose cells list the vertices
+  // The field at x: every vertex whose support holds x adds its quadric, its weight scaled by
+  // a facing factor, so that the other side of a thin gap (the inner thigh across the crotch)
+  // never enters the blend. The factor reads a facing normal m that is C2 in x, so that the
+  // gap and the contact force along its gradient are C1 wherever the factor acts
+  // (docs/bodies.md, "The smooth contact surface"):
+  //   (F1) v = sum_j w_j F_j n_j,  F_j = S((n_j . m0 - cos 160) / (cos 140 - cos 160)),
+  //   (F2) m = v / |v|,  dm/dx = (I - m m^T) (dv/dx) / |v|,
+  //   (F3) w_i <- w_i S(a_i),  a_i = 2 (n_i . m + 1/2),
+  // S the quintic smoothstep, m0 = `reference_normal` the flat surface's interpolated normal
+  // at x (derivative `reference_normal_derivative`): a vertex within 90 degrees of m adds
+  // fully, one beyond 120 not at all. m0 only screens out the far side of a fold (F1); its
+  // derivative jumps where the flat closest point passes from a face onto an edge, so a factor
+  // read from m0 itself put kinks into the gap. The Hessian of a_i (F4 in the .cc) is exact
+  // up to m0's second derivative, which acts only on vertices 140 to 160 degrees from m0.
+  // The vertices are found in a uniform grid whose cells list the vertices
   // whose support reaches into them (built with the field): a query scans one cell's list
   // (about 100 vertices on the MakeHuman female, 27 of which add), whichever face is closest.
   // `candidates` (when given) replaces the cell's list: ascending vertex numbers that hold every

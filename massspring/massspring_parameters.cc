@@ -156,8 +156,10 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "would make to a vertex's multiplier (kA |g| in contact), or below the stop "
                     "rule if that is larger. The settle after the last update always meets the "
                     "stop rule, so the stable state meets the same rule; settling the earlier "
-                    "rounds below what their update changes only spends frames. Read on mesh "
-                    "bodies without friction under the largest-residual stop rule only. 0 = "
+                    "rounds below what their update changes only spends frames. Once an update "
+                    "leaves more than a quarter of the last update's penetration (a garment still "
+                    "sliding reopens the gaps), every later settle meets the stop rule. Read on "
+                    "mesh bodies without friction under the largest-residual stop rule only. 0 = "
                     "every settle meets the stop rule.");
   prm.declare_entry("Bending rigidity", text(d.bending_rigidity_N_m), Double(0.0, 1.0),
                     "Bending rigidity B of the fabric, N m (a knit: about 1e-6 to 1e-5 N m). "
