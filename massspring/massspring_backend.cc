@@ -255,12 +255,25 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   hinges_.add_stiffness(x, triplets);
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
+  linearised_contact_.assign(body && k > 0 ? n : 0, LinearisedContact{});
   for (int i = 0; i < n; ++i) {
     // Every vertex gets its diagonal block, in contact or not, so the pattern stays the same.
     Mat3 block = Mat3::Zero();
-    if (body && k > 0)
-      block = nodal_contact(*body, x[i], multiplier_N_[i], k * rest_vertex_area_m2_[i], true)
-                  .stiffness_N_per_m;
+    if (body && k > 0) {
+      LinearisedContact& c = linearised_contact_[i];
+      c.surface = body->query(x[i]);
+      const double penalty_N_per_m = k * rest_vertex_area_m2_[i];
+      const double lambda_N =
+          contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, c.surface.signed_distance_m);
+      c.active = lambda_N > 0.0;
+      if (c.active) {
+        const NodalContact contact =
+            contact_with_multiplier(c.surface, lambda_N, penalty_N_per_m, true);
+        block = contact.stiffness_N_per_m;
+        c.force_N = held_projection(i) * contact.force_N;
+      }
+      c.block = held_projection(i) * block * held_projection(i);
+    }
     add_block(triplets, i, i, block);
   }
   K.resize(3 * n, 3 * n);
@@ -270,9 +283,7 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   // increment has no component along them (the residual has none either).
   Triplets projection, held;
   for (int i = 0; i < n; ++i) {
-    Mat3 P = Mat3::Identity();
-    if (constrained_.constrained(i))
-      for (const Vec3& d : constrained_.directions(i)) P -= d * d.transpose();
+    const Mat3 P = held_projection(i);
     add_block(projection, i, i, P);
     if (constrained_.constrained(i)) add_block(held, i, i, Mat3::Identity() - P);
   }
@@ -280,6 +291,82 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   P.setFromTriplets(projection.begin(), projection.end());
   H.setFromTriplets(held.begin(), held.end());
   K = SparseMatrix(P * K * P) + H;
+}
+
+Mat3 MassSpringBackend::held_projection(int i) const {
+  Mat3 P = Mat3::Identity();
+  if (constrained_.constrained(i))
+    for (const Vec3& d : constrained_.directions(i)) P -= d * d.transpose();
+  return P;
+}
+
+bool MassSpringBackend::predict_contact_set(const Eigen::VectorXd& dx, SparseMatrix& A,
+                                            Eigen::VectorXd& rhs) const {
+  const double k = problem_.contact_stiffness_Pa_per_m;
+  bool changed = false;
+  for (std::size_t i = 0; i < linearised_contact_.size(); ++i) {
+    LinearisedContact& c = linearised_contact_[i];
+    const SurfacePoint& s = c.surface;
+    const double penalty_N_per_m = k * rest_vertex_area_m2_[i];
+    // The gap the increment predicts, to first order.
+    const double gap_m = s.signed_distance_m + s.gap_gradient.dot(dx.segment<3>(3 * i));
+    const bool active = contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, gap_m) > 0.0;
+    if (active == c.active) continue;
+    changed = true;
+    const Mat3 P = held_projection(int(i));
+    Mat3 block;
+    Vec3 force;
+    if (active) {
+      // Closes: the force (lambda_bar - kA g - kA grad g . dx) n, linearised at x although it is
+      // zero there (penalty_contact.h), the curvature's term left out (lambda is zero at x).
+      const NodalContact contact = contact_with_multiplier(
+          s, multiplier_N_[i] - penalty_N_per_m * s.signed_distance_m, penalty_N_per_m, true);
+      block = P * contact.stiffness_N_per_m * P;
+      force = P * contact.force_N;
+    } else {
+      // Opens: the force and stiffness it has in the system leave it.
+      block = -c.block;
+      force = -c.force_N;
+    }
+    for (int r = 0; r < 3; ++r)
+      for (int col = 0; col < 3; ++col) A.coeffRef(3 * i + r, 3 * i + col) += block(r, col);
+    rhs.segment<3>(3 * i) += force;
+    c.active = active;
+    c.block = active ? block : Mat3::Zero();
+    c.force_N = active ? force : Vec3::Zero();
+  }
+  return changed;
+}
+
+StaticNewton::Hooks MassSpringBackend::newton_hooks() const {
+  StaticNewton::Hooks hooks;
+  if (held_turn_.active())
+    hooks.held_mode = [this](const std::vector<Vec3>& x, Eigen::VectorXd& w) {
+      held_turn_mode(x, w);
+    };
+  if (problem_.body && problem_.contact_stiffness_Pa_per_m > 0 &&
+      parameters_.contact_set_predictions > 0) {
+    hooks.contact_set = [this](const Eigen::VectorXd& dx, SparseMatrix& A, Eigen::VectorXd& rhs) {
+      return predict_contact_set(dx, A, rhs);
+    };
+    hooks.contact_set_solves = parameters_.contact_set_predictions;
+  }
+  return hooks;
+}
+
+void MassSpringBackend::held_turn_mode(const std::vector<Vec3>& x, Eigen::VectorXd& w) const {
+  // w_i = m_i a x (x_i - c), c the centre of mass (core/held_turn.h): the increments keep the
+  // garment's mean turn about the held axis, as RK4's velocities do.
+  Vec3 centre = Vec3::Zero();
+  double mass = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    centre += mass_kg_[i] * x[i];
+    mass += mass_kg_[i];
+  }
+  centre /= mass;
+  w.resize(3 * Eigen::Index(x.size()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    w.segment<3>(3 * i) = mass_kg_[i] * held_turn_.axis().cross(x[i] - centre);
 }
 
 void MassSpringBackend::add_contact_damping(const std::vector<Vec3>& v,
@@ -461,7 +548,7 @@ MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
         return residual_forces(x, step.gravity_on, force);
       },
       [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, tolerance_N_,
-      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.frame);
+      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.frame, newton_hooks());
   run.frame += r.iterations;
   run.residual_N = r.residual_N;
   run.newton_history += (run.newton_history.empty() ? "" : "; ") + r.history;
@@ -472,7 +559,7 @@ MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
          << parameters_.maximum_newton_iterations << "); " << run.newton_history;
     throw step_failure(
         std::isfinite(r.residual_N) ? StopReason::iteration_limit : StopReason::not_finite,
-        what.str(), false);
+        what.str(), std::isfinite(r.residual_N));
   }
   MultiplierRound round;
   round.residual_N = {r.residual_N};

@@ -71,6 +71,12 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Implicit integrator: guard against non-convergence, factorisations per "
                     "load step; a step that needs more fails with an error quoting the "
                     "iteration history.");
+  prm.declare_entry("Contact set predictions", text(d.contact_set_predictions), Integer(0, 100),
+                    "Implicit integrator: each Newton iteration solves again, at most this many "
+                    "times, on the contact set its last increment predicts (the vertices it "
+                    "brings into the body, or out of it, to first order in their gaps), so a "
+                    "step does not drive a vertex through the penalty; 0 = the contact set at "
+                    "the iteration's start only.");
   prm.declare_entry("Time step", text(d.time_step_s), Double(0.0, 1.0),
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
                     "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
@@ -190,6 +196,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   prm.enter_subsection("Mass spring");
   integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
+  contact_set_predictions = prm.get_integer("Contact set predictions");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
   // The entries that may be auto are read as text here and as numbers once the subsection is

@@ -36,6 +36,9 @@ struct MassSpringParameters {
   Integrator integrator = Integrator::rk4;
   // Implicit: guard against non-convergence, factorisations per load step.
   int maximum_newton_iterations = 500;
+  // Implicit: solves more per Newton iteration on the contact set the last solve predicts
+  // (static_newton.h, StaticNewton::ContactSet); 0 = the contact set at the iteration's start.
+  int contact_set_predictions = 0;
   // RK4 time step, s; 0 chooses it from the stiffest vertex (membrane, bending and penalty
   // contact) at the start of every load step.
   double time_step_s = 0.0;
