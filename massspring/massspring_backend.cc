@@ -338,6 +338,13 @@ bool MassSpringBackend::predict_contact_set(const Eigen::VectorXd& dx, SparseMat
   return changed;
 }
 
+bool MassSpringBackend::rk4_assists_newton() const {
+  // On a mesh body without friction (the queries carried over RK4's stages): there the
+  // approach is where Newton is slow, and the smooth surface's jumps where it stalls.
+  return parameters_.integrator == Integrator::implicit &&
+         parameters_.implicit_approach_factor > 0 && carry_contact_;
+}
+
 StaticNewton::Hooks MassSpringBackend::newton_hooks() const {
   StaticNewton::Hooks hooks;
   if (held_turn_.active())
@@ -456,6 +463,7 @@ double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in
 }
 
 double MassSpringBackend::settle_tolerance_N() const {
+  if (approach_stop_N_ > 0) return approach_stop_N_;
   if (final_settle_next_) return tolerance_N_;
   return std::max(tolerance_N_, parameters_.inexact_round_fraction * largest_multiplier_change_N_);
 }
@@ -480,6 +488,10 @@ struct MassSpringBackend::StepRun {
   int slide_frames = 0;
   double calm_s = 0.0;
   std::string newton_history;  // implicit: every settle's iterations
+  // Implicit: Newton iterations (frame counts them and any RK4 frames), whether the approach
+  // by RK4 has run, and the settles RK4 finished after Newton stalled.
+  int newton_iterations = 0, newton_stalls = 0;
+  bool approached = false;
 };
 
 SolverError MassSpringBackend::step_failure(StopReason reason, const std::string& what,
@@ -542,19 +554,40 @@ MultiplierRound MassSpringBackend::settle(const LoadStep& step) {
 // factorisations.
 MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
   StepRun& run = *run_;
+  const bool assisted = rk4_assists_newton();
+  if (assisted && !run.approached) {
+    // The approach by RK4 frames (massspring_parameters.h): the garment's travel onto the body,
+    // where the contact set changes from one iteration to the next, is Newton's slow part.
+    run.approached = true;
+    approach_stop_N_ = parameters_.implicit_approach_factor * tolerance_N_;
+    settle_rk4(step);
+    approach_stop_N_ = 0.0;
+  }
+  StaticNewton::Hooks hooks = newton_hooks();
+  if (assisted) hooks.stall_iterations = 10;
   const StaticNewton::Result r = newton_.solve(
       x_, mass_kg_,
       [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
         return residual_forces(x, step.gravity_on, force);
       },
-      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, tolerance_N_,
-      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.frame, newton_hooks());
+      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); },
+      settle_tolerance_N(), 1.0 / damping_per_s_,
+      parameters_.maximum_newton_iterations - run.newton_iterations,
+      hooks);
   run.frame += r.iterations;
+  run.newton_iterations += r.iterations;
   run.residual_N = r.residual_N;
   run.newton_history += (run.newton_history.empty() ? "" : "; ") + r.history;
+  if (r.stalled) {
+    // Newton stalled (on a mesh body's smooth surface, where the contact force jumps under
+    // displacements of nanometres): RK4 frames finish the settle from where it stopped.
+    std::fill(v_.begin(), v_.end(), Vec3::Zero());
+    ++run.newton_stalls;
+    return settle_rk4(step);
+  }
   if (!r.converged) {
     std::ostringstream what;
-    what << "did not reach equilibrium (implicit integrator, " << run.frame
+    what << "did not reach equilibrium (implicit integrator, " << run.newton_iterations
          << " Newton iterations, Mass spring/Maximum Newton iterations "
          << parameters_.maximum_newton_iterations << "); " << run.newton_history;
     throw step_failure(
@@ -694,7 +727,7 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   const bool inexact = rounds.max_updates > 0 && rounds.settle_after_last_update &&
                        carry_contact_ && parameters_.stop.norm == StopNorm::largest &&
                        parameters_.inexact_round_fraction > 0 &&
-                       parameters_.integrator == Integrator::rk4;
+                       (parameters_.integrator == Integrator::rk4 || rk4_assists_newton());
   final_settle_next_ = !inexact;
   rounds.read_gap = [&](bool update, int* count) {
     const double penetration_m = contact_penetration_m(update, count);

@@ -98,6 +98,9 @@ class MassSpringBackend final : public Backend {
   bool predict_contact_set(const Eigen::VectorXd& dx, SparseMatrix& A, Eigen::VectorXd& rhs) const;
   // The held mode and the contact set prediction, where they apply.
   StaticNewton::Hooks newton_hooks() const;
+  // Implicit on a mesh body without friction, with Implicit RK4 approach above 0: RK4 frames
+  // take the garment onto the body and finish a Newton settle that stalls.
+  bool rk4_assists_newton() const;
 
  private:
   // Internal (membrane + bending) force on every particle into `force`, N.
@@ -227,6 +230,8 @@ class MassSpringBackend final : public Backend {
   bool final_settle_next_ = true;
   // The residual below which the current settle stops, N.
   double settle_tolerance_N() const;
+  // Above 0 while the implicit route's approach runs RK4 frames: their stop, N.
+  double approach_stop_N_ = 0.0;
   // Adds each in-contact particle's damper -c (v . d) d to `force`, d = grad g.
   void add_contact_damping(const std::vector<Vec3>& v, std::vector<Vec3>& force) const;
 };

@@ -72,8 +72,15 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
   SparseMatrix K;
   Eigen::VectorXd rhs(3 * n), dx(3 * n);
   Factorisation& f = *factorisation_;
+  std::vector<double> largest_by_iteration{largest};
   while (std::isfinite(largest) && largest >= tolerance_N &&
          result.iterations < maximum_iterations) {
+    const int window = hooks.stall_iterations;
+    if (window > 0 && result.iterations >= window &&
+        !(largest < 0.9 * largest_by_iteration[result.iterations - window])) {
+      result.stalled = true;
+      break;
+    }
     ++result.iterations;
     stiffness(x, K);
     for (std::size_t v = 0; v < n; ++v) {
@@ -115,6 +122,7 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
       }
       if (accepted) length *= 2.0;  // undo the loop's last halving
     }
+    largest_by_iteration.push_back(largest);
     history << "\n  " << result.iterations << ": " << largest << "  " << tau << "  ";
     if (accepted)
       history << length;

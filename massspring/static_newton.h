@@ -48,12 +48,16 @@ class StaticNewton {
     HeldMode held_mode;          // empty: no held mode
     ContactSet contact_set;      // empty: the set at x
     int contact_set_solves = 3;  // at most this many solves more per iteration
+    // Above 0: stop (not converged) once the largest residual has not fallen below 0.9 times
+    // its value this many iterations before: a stall, for the caller to finish another way.
+    int stall_iterations = 0;
   };
 
   struct Result {
     bool converged = false;
     int iterations = 0;       // factorisations
     double residual_N = 0.0;  // the largest residual force at the end
+    bool stalled = false;     // stopped by Hooks::stall_iterations
     std::string history;      // one line per iteration
   };
 
