@@ -570,10 +570,8 @@ MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
       [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
         return residual_forces(x, step.gravity_on, force);
       },
-      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); },
-      settle_tolerance_N(), 1.0 / damping_per_s_,
-      parameters_.maximum_newton_iterations - run.newton_iterations,
-      hooks);
+      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, settle_tolerance_N(),
+      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.newton_iterations, hooks);
   run.frame += r.iterations;
   run.newton_iterations += r.iterations;
   run.residual_N = r.residual_N;

@@ -80,8 +80,7 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "brings into the body, or out of it, to first order in their gaps), so a "
                     "step does not drive a vertex through the penalty; 0 = the contact set at "
                     "the iteration's start only.");
-  prm.declare_entry("Implicit RK4 approach", text(d.implicit_approach_factor),
-                    Double(0.0),
+  prm.declare_entry("Implicit RK4 approach", text(d.implicit_approach_factor), Double(0.0),
                     "Implicit integrator on a mesh body without friction, above 0: each load "
                     "step starts with RK4 frames until the largest residual is below this many "
                     "times the stop rule's tolerance (the garment's travel onto the body, where "

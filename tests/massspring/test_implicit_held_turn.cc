@@ -130,9 +130,10 @@ TEST(MassSpringImplicitHeldTurn, HeldTubeReachesLaplacesPressureAndRk4sState) {
   const double ratio = implicit.mean_pressure_Pa / reference.eq7_pressure_Pa(alpha);
   EXPECT_LT(ratio, 1.0);
   EXPECT_GT(ratio, 1.0 - 1.5 * 4.7e-3);
-  // The same equilibrium as RK4's within the stop rule's bound, 1e-4 of the strain
-  // (docs/backends.md); measured 7.7e-5.
-  EXPECT_NEAR(implicit.mean_pressure_Pa / rk4.mean_pressure_Pa, 1.0, 1e-4);
+  // The same equilibrium as RK4's within the stop rule's bound: it leaves each state within
+  // 1.4e-4 of the contact force (test_cylinder_pressure.cc), so the two within 2.8e-4;
+  // measured 7.7e-5.
+  EXPECT_NEAR(implicit.mean_pressure_Pa / rk4.mean_pressure_Pa, 1.0, 2.8e-4);
   // Neither route turns the tube about the axis: the mean angle of the vertices the same,
   // measured 1.5e-17 rad (a free turn left by the increments would show as the angle the
   // stop rule allows, 1e-4 of the strain over the radius, about 1e-6 rad); bound 1e-9 rad.
@@ -147,7 +148,7 @@ TEST(MassSpringImplicitHeldTurn, HeldTubeReachesLaplacesPressureAndRk4sState) {
   // With the contact set predicted (Contact set predictions) the same equilibrium, to the stop
   // rule's bound.
   const HeldTube predicted = settle_held_tube(Integrator::implicit, alpha, 3);
-  EXPECT_NEAR(predicted.mean_pressure_Pa / rk4.mean_pressure_Pa, 1.0, 1e-4);
+  EXPECT_NEAR(predicted.mean_pressure_Pa / rk4.mean_pressure_Pa, 1.0, 2.8e-4);
 }
 
 }  // namespace
