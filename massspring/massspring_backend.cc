@@ -255,12 +255,25 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   hinges_.add_stiffness(x, triplets);
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
+  linearised_contact_.assign(body && k > 0 ? n : 0, LinearisedContact{});
   for (int i = 0; i < n; ++i) {
     // Every vertex gets its diagonal block, in contact or not, so the pattern stays the same.
     Mat3 block = Mat3::Zero();
-    if (body && k > 0)
-      block = nodal_contact(*body, x[i], multiplier_N_[i], k * rest_vertex_area_m2_[i], true)
-                  .stiffness_N_per_m;
+    if (body && k > 0) {
+      LinearisedContact& c = linearised_contact_[i];
+      c.surface = body->query(x[i]);
+      const double penalty_N_per_m = k * rest_vertex_area_m2_[i];
+      const double lambda_N =
+          contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, c.surface.signed_distance_m);
+      c.active = lambda_N > 0.0;
+      if (c.active) {
+        const NodalContact contact =
+            contact_with_multiplier(c.surface, lambda_N, penalty_N_per_m, true);
+        block = contact.stiffness_N_per_m;
+        c.force_N = held_projection(i) * contact.force_N;
+      }
+      c.block = held_projection(i) * block * held_projection(i);
+    }
     add_block(triplets, i, i, block);
   }
   K.resize(3 * n, 3 * n);
@@ -270,9 +283,7 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   // increment has no component along them (the residual has none either).
   Triplets projection, held;
   for (int i = 0; i < n; ++i) {
-    Mat3 P = Mat3::Identity();
-    if (constrained_.constrained(i))
-      for (const Vec3& d : constrained_.directions(i)) P -= d * d.transpose();
+    const Mat3 P = held_projection(i);
     add_block(projection, i, i, P);
     if (constrained_.constrained(i)) add_block(held, i, i, Mat3::Identity() - P);
   }
@@ -280,6 +291,89 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   P.setFromTriplets(projection.begin(), projection.end());
   H.setFromTriplets(held.begin(), held.end());
   K = SparseMatrix(P * K * P) + H;
+}
+
+Mat3 MassSpringBackend::held_projection(int i) const {
+  Mat3 P = Mat3::Identity();
+  if (constrained_.constrained(i))
+    for (const Vec3& d : constrained_.directions(i)) P -= d * d.transpose();
+  return P;
+}
+
+bool MassSpringBackend::predict_contact_set(const Eigen::VectorXd& dx, SparseMatrix& A,
+                                            Eigen::VectorXd& rhs) const {
+  const double k = problem_.contact_stiffness_Pa_per_m;
+  bool changed = false;
+  for (std::size_t i = 0; i < linearised_contact_.size(); ++i) {
+    LinearisedContact& c = linearised_contact_[i];
+    const SurfacePoint& s = c.surface;
+    const double penalty_N_per_m = k * rest_vertex_area_m2_[i];
+    // The gap the increment predicts, to first order.
+    const double gap_m = s.signed_distance_m + s.gap_gradient.dot(dx.segment<3>(3 * i));
+    const bool active = contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, gap_m) > 0.0;
+    if (active == c.active) continue;
+    changed = true;
+    const Mat3 P = held_projection(int(i));
+    Mat3 block;
+    Vec3 force;
+    if (active) {
+      // Closes: the force (lambda_bar - kA g - kA grad g . dx) n, linearised at x although it is
+      // zero there (penalty_contact.h), the curvature's term left out (lambda is zero at x).
+      const NodalContact contact = contact_with_multiplier(
+          s, multiplier_N_[i] - penalty_N_per_m * s.signed_distance_m, penalty_N_per_m, true);
+      block = P * contact.stiffness_N_per_m * P;
+      force = P * contact.force_N;
+    } else {
+      // Opens: the force and stiffness it has in the system leave it.
+      block = -c.block;
+      force = -c.force_N;
+    }
+    for (int r = 0; r < 3; ++r)
+      for (int col = 0; col < 3; ++col) A.coeffRef(3 * i + r, 3 * i + col) += block(r, col);
+    rhs.segment<3>(3 * i) += force;
+    c.active = active;
+    c.block = active ? block : Mat3::Zero();
+    c.force_N = active ? force : Vec3::Zero();
+  }
+  return changed;
+}
+
+bool MassSpringBackend::rk4_assists_newton() const {
+  // On a mesh body without friction (the queries carried over RK4's stages): there the
+  // approach is where Newton is slow, and the smooth surface's jumps where it stalls.
+  return parameters_.integrator == Integrator::implicit &&
+         parameters_.implicit_approach_factor > 0 && carry_contact_;
+}
+
+StaticNewton::Hooks MassSpringBackend::newton_hooks() const {
+  StaticNewton::Hooks hooks;
+  if (held_turn_.active())
+    hooks.held_mode = [this](const std::vector<Vec3>& x, Eigen::VectorXd& w) {
+      held_turn_mode(x, w);
+    };
+  if (problem_.body && problem_.contact_stiffness_Pa_per_m > 0 &&
+      parameters_.contact_set_predictions > 0) {
+    hooks.contact_set = [this](const Eigen::VectorXd& dx, SparseMatrix& A, Eigen::VectorXd& rhs) {
+      return predict_contact_set(dx, A, rhs);
+    };
+    hooks.contact_set_solves = parameters_.contact_set_predictions;
+  }
+  return hooks;
+}
+
+void MassSpringBackend::held_turn_mode(const std::vector<Vec3>& x, Eigen::VectorXd& w) const {
+  // w_i = m_i a x (x_i - c), c the centre of mass (core/held_turn.h): the increments keep the
+  // garment's mean turn about the held axis, as RK4's velocities do.
+  Vec3 centre = Vec3::Zero();
+  double mass = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    centre += mass_kg_[i] * x[i];
+    mass += mass_kg_[i];
+  }
+  centre /= mass;
+  w.resize(3 * Eigen::Index(x.size()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    w.segment<3>(3 * i) = mass_kg_[i] * held_turn_.axis().cross(x[i] - centre);
 }
 
 void MassSpringBackend::add_contact_damping(const std::vector<Vec3>& v,
@@ -369,6 +463,7 @@ double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in
 }
 
 double MassSpringBackend::settle_tolerance_N() const {
+  if (approach_stop_N_ > 0) return approach_stop_N_;
   if (final_settle_next_) return tolerance_N_;
   return std::max(tolerance_N_, parameters_.inexact_round_fraction * largest_multiplier_change_N_);
 }
@@ -393,6 +488,10 @@ struct MassSpringBackend::StepRun {
   int slide_frames = 0;
   double calm_s = 0.0;
   std::string newton_history;  // implicit: every settle's iterations
+  // Implicit: Newton iterations (frame counts them and any RK4 frames), whether the approach
+  // by RK4 has run, and the settles RK4 finished after Newton stalled.
+  int newton_iterations = 0, newton_stalls = 0;
+  bool approached = false;
 };
 
 SolverError MassSpringBackend::step_failure(StopReason reason, const std::string& what,
@@ -455,24 +554,43 @@ MultiplierRound MassSpringBackend::settle(const LoadStep& step) {
 // factorisations.
 MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
   StepRun& run = *run_;
+  const bool assisted = rk4_assists_newton();
+  if (assisted && !run.approached) {
+    // The approach by RK4 frames (massspring_parameters.h): the garment's travel onto the body,
+    // where the contact set changes from one iteration to the next, is Newton's slow part.
+    run.approached = true;
+    approach_stop_N_ = parameters_.implicit_approach_factor * tolerance_N_;
+    settle_rk4(step);
+    approach_stop_N_ = 0.0;
+  }
+  StaticNewton::Hooks hooks = newton_hooks();
+  if (assisted) hooks.stall_iterations = 10;
   const StaticNewton::Result r = newton_.solve(
       x_, mass_kg_,
       [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
         return residual_forces(x, step.gravity_on, force);
       },
-      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, tolerance_N_,
-      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.frame);
+      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, settle_tolerance_N(),
+      1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.newton_iterations, hooks);
   run.frame += r.iterations;
+  run.newton_iterations += r.iterations;
   run.residual_N = r.residual_N;
   run.newton_history += (run.newton_history.empty() ? "" : "; ") + r.history;
+  if (r.stalled) {
+    // Newton stalled (on a mesh body's smooth surface, where the contact force jumps under
+    // displacements of nanometres): RK4 frames finish the settle from where it stopped.
+    std::fill(v_.begin(), v_.end(), Vec3::Zero());
+    ++run.newton_stalls;
+    return settle_rk4(step);
+  }
   if (!r.converged) {
     std::ostringstream what;
-    what << "did not reach equilibrium (implicit integrator, " << run.frame
+    what << "did not reach equilibrium (implicit integrator, " << run.newton_iterations
          << " Newton iterations, Mass spring/Maximum Newton iterations "
          << parameters_.maximum_newton_iterations << "); " << run.newton_history;
     throw step_failure(
         std::isfinite(r.residual_N) ? StopReason::iteration_limit : StopReason::not_finite,
-        what.str(), false);
+        what.str(), std::isfinite(r.residual_N));
   }
   MultiplierRound round;
   round.residual_N = {r.residual_N};
@@ -607,9 +725,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
   bool inexact = rounds.max_updates > 0 && rounds.settle_after_last_update && carry_contact_ &&
                  parameters_.stop.norm == StopNorm::largest &&
                  parameters_.inexact_round_fraction > 0 &&
-                 parameters_.integrator == Integrator::rk4;
+                 (parameters_.integrator == Integrator::rk4 || rk4_assists_newton());
   final_settle_next_ = !inexact;
-  // An inexact round whose update leaves more than half the last update's penetration settles
+  // An inexact round whose update leaves more than a quarter of the last update's penetration settles
   // exactly from then on: a slow mode still moving under the early stops (the stocking at half
   // resolution, 16 mm x 30 mm, sliding round the ankle) keeps reopening the gaps each update
   // closes, where the exact rounds close them 25-fold per update (docs/stocking.md).

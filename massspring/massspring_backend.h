@@ -75,6 +75,32 @@ class MassSpringBackend final : public Backend {
   // triangles' exact stiffness, the hinges' Gauss-Newton one, each contact's and, at a held
   // vertex, the held directions projected out (and a unit diagonal put in their place).
   void stiffness(const std::vector<Vec3>& x, SparseMatrix& K) const;
+  // The held turn's mode (held_turn.h) at `x`: w_i = m_i a x (x_i - c), 3n, the direction
+  // the implicit route's increments are kept normal to (static_newton.h).
+  void held_turn_mode(const std::vector<Vec3>& x, Eigen::VectorXd& w) const;
+
+ private:
+  // The implicit route's contact set: at the x stiffness() was last assembled at, each
+  // vertex's body query, whether its contact is in the system, and the (held-projected)
+  // diagonal block and force its contact put there.
+  struct LinearisedContact {
+    SurfacePoint surface;
+    bool active = false;
+    Mat3 block = Mat3::Zero();
+    Vec3 force_N = Vec3::Zero();  // and the force it put into the right-hand side
+  };
+  mutable std::vector<LinearisedContact> linearised_contact_;
+  // Vertex i's projection I - sum d d^T removing its held directions (identity when free).
+  Mat3 held_projection(int i) const;
+  // StaticNewton::ContactSet on the system stiffness() assembled last: each vertex whose
+  // contact the increment `dx` opens or closes has its contact's force and stiffness taken
+  // out of or put into `A` and `rhs`.
+  bool predict_contact_set(const Eigen::VectorXd& dx, SparseMatrix& A, Eigen::VectorXd& rhs) const;
+  // The held mode and the contact set prediction, where they apply.
+  StaticNewton::Hooks newton_hooks() const;
+  // Implicit on a mesh body without friction, with Implicit RK4 approach above 0: RK4 frames
+  // take the garment onto the body and finish a Newton settle that stalls.
+  bool rk4_assists_newton() const;
 
  private:
   // Internal (membrane + bending) force on every particle into `force`, N.
@@ -204,6 +230,8 @@ class MassSpringBackend final : public Backend {
   bool final_settle_next_ = true;
   // The residual below which the current settle stops, N.
   double settle_tolerance_N() const;
+  // Above 0 while the implicit route's approach runs RK4 frames: their stop, N.
+  double approach_stop_N_ = 0.0;
   // Adds each in-contact particle's damper -c (v . d) d to `force`, d = grad g.
   void add_contact_damping(const std::vector<Vec3>& v, std::vector<Vec3>& force) const;
 };

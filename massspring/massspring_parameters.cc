@@ -65,12 +65,30 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "sparse Cholesky solve (CHOLMOD) of (K + M / tau^2) dx = f with a pseudo "
                     "time step tau that grows tenfold after every full step; the same stop rule "
                     "and contact multiplier updates, so the same equilibrium within the stop "
-                    "rule, in far less time on fine meshes (docs/performance.md).");
+                    "rule, in far less time on fine meshes of the analytic bodies "
+                    "(docs/performance.md), and with Implicit RK4 approach on the frictionless "
+                    "mesh-body cases (the stockings: 2 to 7 times less CPU than rk4; "
+                    "docs/backends.md, \"Where each integrator is used\").");
   prm.declare_entry("Maximum Newton iterations", text(d.maximum_newton_iterations),
                     Integer(1, 100000000),
                     "Implicit integrator: guard against non-convergence, factorisations per "
                     "load step; a step that needs more fails with an error quoting the "
                     "iteration history.");
+  prm.declare_entry("Contact set predictions", text(d.contact_set_predictions), Integer(0, 100),
+                    "Implicit integrator: each Newton iteration solves again, at most this many "
+                    "times, on the contact set its last increment predicts (the vertices it "
+                    "brings into the body, or out of it, to first order in their gaps), so a "
+                    "step does not drive a vertex through the penalty; 0 = the contact set at "
+                    "the iteration's start only.");
+  prm.declare_entry("Implicit RK4 approach", text(d.implicit_approach_factor), Double(0.0),
+                    "Implicit integrator on a mesh body without friction, above 0: each load "
+                    "step starts with RK4 frames until the largest residual is below this many "
+                    "times the stop rule's tolerance (the garment's travel onto the body, where "
+                    "the contact set changes at every Newton iteration), its contact rounds stop "
+                    "early as RK4's do (Inexact contact rounds), and a Newton settle whose "
+                    "largest residual has not fallen by 10% in 10 iterations is finished by RK4 "
+                    "frames (docs/backends.md, \"Where each integrator is used\"). 0 = Newton "
+                    "alone.");
   prm.declare_entry("Time step", text(d.time_step_s), Double(0.0, 1.0),
                     "RK4 time step, s. 0 = automatic: a fraction (Time step safety) of the RK4 "
                     "stability limit 2 sqrt(2)/omega_max, omega_max from the stiffest vertex "
@@ -192,6 +210,8 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   prm.enter_subsection("Mass spring");
   integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
+  contact_set_predictions = prm.get_integer("Contact set predictions");
+  implicit_approach_factor = prm.get_double("Implicit RK4 approach");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
   // The entries that may be auto are read as text here and as numbers once the subsection is

@@ -36,6 +36,15 @@ struct MassSpringParameters {
   Integrator integrator = Integrator::rk4;
   // Implicit: guard against non-convergence, factorisations per load step.
   int maximum_newton_iterations = 500;
+  // Implicit: solves more per Newton iteration on the contact set the last solve predicts
+  // (static_newton.h, StaticNewton::ContactSet); 0 = the contact set at the iteration's start.
+  int contact_set_predictions = 0;
+  // Implicit on a mesh body without friction, above 0: each load step starts with RK4 frames
+  // until the residual is below this times the stop rule's tolerance (the garment's travel
+  // onto the body), the contact rounds stop early as RK4's do (Inexact contact rounds), and a
+  // Newton settle whose largest residual has not fallen by 10% in 10 iterations is finished
+  // by RK4 frames. 0 = Newton alone.
+  double implicit_approach_factor = 1000.0;
   // RK4 time step, s; 0 chooses it from the stiffest vertex (membrane, bending and penalty
   // contact) at the start of every load step.
   double time_step_s = 0.0;

@@ -31,6 +31,8 @@ void MassSpringParameters::validate() const {
   require(net_force_tolerance >= 0, "Net force tolerance", "must be >= 0 (0 = off)");
   require(maximum_frames > 0, "Maximum frames", "must be positive");
   require(maximum_newton_iterations > 0, "Maximum Newton iterations", "must be positive");
+  require(implicit_approach_factor >= 0, "Implicit RK4 approach", "must be >= 0 (0 = off)");
+  require(contact_set_predictions >= 0, "Contact set predictions", "must be >= 0 (0 = off)");
   require(stall_window_frames > 0, "Stall window", "must be positive (frames)");
   require(stall_fall > 0 && stall_fall < 1, "Stall residual fall", "must be in (0, 1)");
   require(stall_halvings >= 0, "Stall time step halvings", "must be >= 0");

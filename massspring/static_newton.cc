@@ -39,10 +39,25 @@ double norm2(const std::vector<Vec3>& f) {
 
 }  // namespace
 
+void StaticNewton::solve_increment(const std::vector<Vec3>& x, const Eigen::VectorXd& rhs,
+                                   const HeldMode& held_mode, Eigen::VectorXd& dx) const {
+  const Factorisation& f = *factorisation_;
+  dx = f.llt.solve(rhs);
+  if (!held_mode) return;
+  // The held mode's constraint w^T dx = 0 with its reaction mu w (a saddle point):
+  // A dx + mu w = f, so dx = A^-1 f - mu A^-1 w with mu = w^T A^-1 f / w^T A^-1 w. The
+  // residual the linear step leaves, mu w, is what the forces' projection removes.
+  Eigen::VectorXd w;
+  held_mode(x, w);
+  const Eigen::VectorXd along_w = f.llt.solve(w);
+  const double w_along_w = w.dot(along_w);
+  if (w_along_w > 0) dx -= (w.dot(dx) / w_along_w) * along_w;
+}
+
 StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector<double>& mass_kg,
                                          const Forces& forces, const Stiffness& stiffness,
                                          double tolerance_N, double initial_tau_s,
-                                         int maximum_iterations) {
+                                         int maximum_iterations, const Hooks& hooks) {
   const std::size_t n = x.size();
   // tau between these bounds: the longest makes M / tau^2 negligible against any stiffness
   // (Newton's own step), the shortest a step of explicit size.
@@ -57,8 +72,15 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
   SparseMatrix K;
   Eigen::VectorXd rhs(3 * n), dx(3 * n);
   Factorisation& f = *factorisation_;
+  std::vector<double> largest_by_iteration{largest};
   while (std::isfinite(largest) && largest >= tolerance_N &&
          result.iterations < maximum_iterations) {
+    const int window = hooks.stall_iterations;
+    if (window > 0 && result.iterations >= window &&
+        !(largest < 0.9 * largest_by_iteration[result.iterations - window])) {
+      result.stalled = true;
+      break;
+    }
     ++result.iterations;
     stiffness(x, K);
     for (std::size_t v = 0; v < n; ++v) {
@@ -75,7 +97,16 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
     bool accepted = false;
     double length = 1.0;
     if (f.llt.info() == Eigen::Success) {
-      dx = f.llt.solve(rhs);
+      solve_increment(x, rhs, hooks.held_mode, dx);
+      // Linearised again about the contact set the increment predicts, while it changes and
+      // the matrix stays positive definite.
+      for (int p = 0;
+           p < hooks.contact_set_solves && hooks.contact_set && hooks.contact_set(dx, K, rhs);
+           ++p) {
+        f.llt.factorize(K);
+        if (f.llt.info() != Eigen::Success) break;
+        solve_increment(x, rhs, hooks.held_mode, dx);
+      }
       // Backtracking on the residual's norm.
       for (int halving = 0; halving < 6 && !accepted; ++halving, length *= 0.5) {
         for (std::size_t v = 0; v < n; ++v) trial_x[v] = x[v] + length * dx.segment<3>(3 * v);
@@ -91,8 +122,12 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
       }
       if (accepted) length *= 2.0;  // undo the loop's last halving
     }
-    history << "\n  " << result.iterations << ": " << largest << "  " << tau << "  "
-            << (accepted ? length : 0.0);
+    largest_by_iteration.push_back(largest);
+    history << "\n  " << result.iterations << ": " << largest << "  " << tau << "  ";
+    if (accepted)
+      history << length;
+    else
+      history << (f.llt.info() == Eigen::Success ? "0 (no descent)" : "0 (not positive definite)");
     if (accepted && length == 1.0)
       tau = std::min(10.0 * tau, longest_tau_s);
     else if (!accepted) {

@@ -33,11 +33,31 @@ class StaticNewton {
   using Forces = std::function<double(const std::vector<Vec3>& x, std::vector<Vec3>& force)>;
   // Sets `K` to the stiffness -df/dx (N/m, symmetric, 3n x 3n) at `x`.
   using Stiffness = std::function<void(const std::vector<Vec3>& x, SparseMatrix& K)>;
+  // Sets `w` (3n) to a mode the increments must not move along, w^T dx = 0, whose reaction the
+  // residual already has removed (f^T u = 0 for the u with w^T u != 0 that the forces project
+  // out): the held turn's mass-weighted turn m_i a x (x_i - c) (core/held_turn.h).
+  using HeldMode = std::function<void(const std::vector<Vec3>& x, Eigen::VectorXd& w)>;
+  // Contact set prediction: given the increment `dx` just solved for, changes the system
+  // (A dx = rhs, A the regularised matrix) at the vertices whose contact the increment opens
+  // or closes, to the linearisation about the set the increment predicts; returns false when
+  // the set it predicts is the one the system already has (a primal-dual active set step,
+  // Hintermueller, Ito and Kunisch, SIAM J. Optim. 13, 2003).
+  using ContactSet =
+      std::function<bool(const Eigen::VectorXd& dx, SparseMatrix& A, Eigen::VectorXd& rhs)>;
+  struct Hooks {
+    HeldMode held_mode;          // empty: no held mode
+    ContactSet contact_set;      // empty: the set at x
+    int contact_set_solves = 3;  // at most this many solves more per iteration
+    // Above 0: stop (not converged) once the largest residual has not fallen below 0.9 times
+    // its value this many iterations before: a stall, for the caller to finish another way.
+    int stall_iterations = 0;
+  };
 
   struct Result {
     bool converged = false;
     int iterations = 0;       // factorisations
     double residual_N = 0.0;  // the largest residual force at the end
+    bool stalled = false;     // stopped by Hooks::stall_iterations
     std::string history;      // one line per iteration
   };
 
@@ -49,9 +69,13 @@ class StaticNewton {
   // time step (s), e.g. the inverse of the garment's critical damping.
   Result solve(std::vector<Vec3>& x, const std::vector<double>& mass_kg, const Forces& forces,
                const Stiffness& stiffness, double tolerance_N, double initial_tau_s,
-               int maximum_iterations);
+               int maximum_iterations, const Hooks& hooks);
 
  private:
+  // dx = A^-1 rhs from the factorisation, kept normal to the held mode's w when there is one.
+  void solve_increment(const std::vector<Vec3>& x, const Eigen::VectorXd& rhs,
+                       const HeldMode& held_mode, Eigen::VectorXd& dx) const;
+
   struct Factorisation;
   std::unique_ptr<Factorisation> factorisation_;
 };
