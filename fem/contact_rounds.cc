@@ -28,7 +28,7 @@ ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
 }
 
 void ContactRounds::start_from(const DofVector& x) {
-  secant_.forget();
+  history_.forget();
   friction_force_N_.assign(pattern_.n_owned_nodes(), Vec3::Zero());
   n_slipping_ = 0;
   std::vector<Vec3> nodes(pattern_.n_owned_nodes());
@@ -61,14 +61,12 @@ void ContactRounds::commit_friction(const DofVector& x) {
 }
 
 void ContactRounds::secant_predictor(const LoadStep& step, DofVector& x) {
-  const double ratio = secant_.ratio(step.alpha);
-  if (ratio == 0.0) return;
-  const int last = secant_.newest(), before = 1 - last;
-  x = history_x_[last];
-  x.add(ratio, history_x_[last], -ratio, history_x_[before]);
-  x.update_ghost_values();
-  AlphaSecant::extrapolate_multipliers(ratio, history_multiplier_N_[last],
-                                       history_multiplier_N_[before], nodes_.multiplier_N);
+  history_.predict(step.alpha, nodes_.multiplier_N,
+                   [&](double ratio, const DofVector& last, const DofVector& before) {
+                     x = last;
+                     x.add(ratio, last, -ratio, before);
+                     x.update_ghost_values();
+                   });
   // No constraints.distribute(x): the pins and held ends constrain increments, and the
   // secant of two states that satisfy them (and the seams) satisfies them already.
 }
@@ -163,11 +161,7 @@ void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
                        newton.tolerance_N());
   commit_friction(x);
   had_contact_ = had_contact_ || report.n_in_contact > 0;
-  secant_.record(step.alpha, report.n_in_contact > 0);
-  if (report.n_in_contact > 0) {
-    history_x_[secant_.newest()] = x;
-    history_multiplier_N_[secant_.newest()] = nodes_.multiplier_N;
-  }
+  history_.record(step.alpha, report.n_in_contact > 0, x, nodes_.multiplier_N);
 }
 
 }  // namespace tightfit

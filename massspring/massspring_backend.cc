@@ -103,26 +103,21 @@ void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
                                 std::to_string(problem_.mesh->n_vertices) + " vertices");
   x_ = positions_m;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
-  secant_.forget();
+  history_.forget();
   // A garment placed anew sticks where it first touches: its anchors are its closest points.
   if (problem_.body) friction_.place(*problem_.body, x_);
 }
 
 void MassSpringBackend::predict(double alpha) {
-  const double ratio = secant_.ratio(alpha);
-  if (ratio == 0.0) return;
-  const int last = secant_.newest(), before = 1 - last;
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    x_[i] = settled_x_[last][i] + ratio * (settled_x_[last][i] - settled_x_[before][i]);
-  AlphaSecant::extrapolate_multipliers(ratio, settled_multiplier_N_[last],
-                                       settled_multiplier_N_[before], multiplier_N_);
+  history_.predict(
+      alpha, multiplier_N_,
+      [&](double ratio, const std::vector<Vec3>& last, const std::vector<Vec3>& before) {
+        for (std::size_t i = 0; i < x_.size(); ++i) x_[i] = last[i] + ratio * (last[i] - before[i]);
+      });
 }
 
 void MassSpringBackend::record_settled(double alpha, bool in_contact) {
-  secant_.record(alpha, in_contact);
-  if (!in_contact) return;
-  settled_x_[secant_.newest()] = x_;
-  settled_multiplier_N_[secant_.newest()] = multiplier_N_;
+  history_.record(alpha, in_contact, x_, multiplier_N_);
 }
 
 Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slipping,
