@@ -1,13 +1,13 @@
 #include "fem/contact_rounds.h"
 
 #include "contact/penalty_contact.h"
+#include "core/load_step_report.h"
 #include "fem/contact_set_prediction.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace tightfit {
 
@@ -135,27 +135,10 @@ void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
   report.iterations = 0;
   for (const MultiplierRound& round : report.rounds) report.iterations += round.iterations;
   const double residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  if (!closed) {
-    // One line per round (Newton iterations, first / last residual N, largest penetration m
-    // after the update, nodes in contact).
-    std::ostringstream history;
-    history.precision(2);
-    history << std::scientific
-            << "rounds (round, Newton iterations, first / last residual N, largest penetration m "
-               "after the update, nodes in contact):";
-    for (std::size_t r = 0; r < report.rounds.size(); ++r) {
-      const MultiplierRound& round = report.rounds[r];
-      history << "\n  " << r << "  " << round.iterations << "  " << round.residual_N.front()
-              << " / " << round.residual_N.back() << "  " << round.penetration_m << "  "
-              << round.n_in_contact;
-    }
-    std::ostringstream what;
-    what << "the contact gap did not close (largest penetration " << max_penetration_m_
-         << " m, Solver/Gap tolerance " << parameters_.stop.gap_tolerance_m << " m) after "
-         << parameters_.max_augmented_lagrangian_iterations << " augmented-Lagrangian updates";
-    throw_step_failure(StopReason::gap_not_closed, step, what.str(), residual_N,
-                       newton.tolerance_N(), history.str());
-  }
+  if (!closed)
+    throw_step_failure(StopReason::gap_not_closed, step,
+                       gap_not_closed_text(report, parameters_.stop.gap_tolerance_m), residual_N,
+                       newton.tolerance_N());
   if (had_contact_ && report.n_in_contact == 0)
     throw_step_failure(StopReason::contact_lost, step, "contact lost", residual_N,
                        newton.tolerance_N());
