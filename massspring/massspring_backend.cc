@@ -203,7 +203,7 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   const std::size_t n = x.size();
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
-  double largest_squared = 0.0, total_squared = 0.0;
+  ResidualSize size;  // the stop rule's size of the field (core/load_step.h)
   Vec3 net_N = Vec3::Zero();
   largest_multiplier_change_N_ = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -214,24 +214,17 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     }
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
-    const double squared = force[i].squaredNorm();
-    largest_squared = std::max(largest_squared, squared);
-    total_squared += squared;  // std::max drops NaN; a sum keeps it
+    size.add(force[i].norm());
     net_N += force[i];
   }
   if (held_turn_.active()) {
     // The held turn's reaction (core/held_turn.h) is part of the residual the rule reads.
     held_turn_.remove_from_forces(x, mass_kg_, force);
-    largest_squared = total_squared = 0.0;
-    for (const Vec3& f : force) {
-      largest_squared = std::max(largest_squared, f.squaredNorm());
-      total_squared += f.squaredNorm();
-    }
+    size = ResidualSize();
+    for (const Vec3& f : force) size.add(f.norm());
   }
-  if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
-  const double norm_N = parameters_.stop.norm == StopNorm::rms
-                            ? std::sqrt(total_squared / double(n))
-                            : std::sqrt(largest_squared);
+  const double norm_N = size.read(parameters_.stop.norm, double(n));
+  if (std::isnan(norm_N)) return norm_N;  // a force not finite
   if (!(net_force_limit_N_ > 0)) return norm_N;
   // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
   return std::max(norm_N, net_N.norm() * tolerance_N_ / net_force_limit_N_);
