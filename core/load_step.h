@@ -78,6 +78,43 @@ class AlphaSecant {
   double alpha_[2] = {0.0, 0.0};
 };
 
+// The last two converged steps in contact, kept for the secant predictor: the backend's state
+// (the mass-spring positions, the FE degrees of freedom) and the contact multipliers at each.
+template <class State>
+class AlphaHistory {
+ public:
+  // A garment placed anew: its history says nothing of where it goes next.
+  void forget() { secant_.forget(); }
+  // A converged step at `alpha`, its state and multipliers kept when in contact.
+  void record(double alpha, bool in_contact, const State& state,
+              const std::vector<double>& multiplier_N) {
+    secant_.record(alpha, in_contact);
+    if (!in_contact) return;
+    state_[secant_.newest()] = state;
+    multiplier_N_[secant_.newest()] = multiplier_N;
+  }
+  // The start at `alpha`: the multipliers extrapolated into `multiplier_N`, and
+  // `extrapolate_state(ratio, last, before)` called to extrapolate the state the backend's way
+  // (last + ratio (last - before)). Returns the ratio, 0 (nothing changed) when there is no
+  // prediction.
+  template <class ExtrapolateState>
+  double predict(double alpha, std::vector<double>& multiplier_N,
+                 ExtrapolateState&& extrapolate_state) const {
+    const double ratio = secant_.ratio(alpha);
+    if (ratio == 0.0) return 0.0;
+    const int last = secant_.newest(), before = 1 - last;
+    extrapolate_state(ratio, state_[last], state_[before]);
+    AlphaSecant::extrapolate_multipliers(ratio, multiplier_N_[last], multiplier_N_[before],
+                                         multiplier_N);
+    return ratio;
+  }
+
+ private:
+  AlphaSecant secant_;
+  State state_[2];
+  std::vector<double> multiplier_N_[2];
+};
+
 // One load step's contact multiplier (Uzawa) rounds: the backend's settle at fixed
 // multipliers, then every vertex's multiplier becomes its contact force, until no vertex in
 // contact is deeper than the gap tolerance. What happens after the update that closes the gap

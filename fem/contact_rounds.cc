@@ -1,13 +1,13 @@
 #include "fem/contact_rounds.h"
 
 #include "contact/penalty_contact.h"
+#include "core/load_step_report.h"
 #include "fem/contact_set_prediction.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace tightfit {
 
@@ -28,7 +28,7 @@ ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
 }
 
 void ContactRounds::start_from(const DofVector& x) {
-  secant_.forget();
+  history_.forget();
   friction_force_N_.assign(pattern_.n_owned_nodes(), Vec3::Zero());
   n_slipping_ = 0;
   std::vector<Vec3> nodes(pattern_.n_owned_nodes());
@@ -61,14 +61,12 @@ void ContactRounds::commit_friction(const DofVector& x) {
 }
 
 void ContactRounds::secant_predictor(const LoadStep& step, DofVector& x) {
-  const double ratio = secant_.ratio(step.alpha);
-  if (ratio == 0.0) return;
-  const int last = secant_.newest(), before = 1 - last;
-  x = history_x_[last];
-  x.add(ratio, history_x_[last], -ratio, history_x_[before]);
-  x.update_ghost_values();
-  AlphaSecant::extrapolate_multipliers(ratio, history_multiplier_N_[last],
-                                       history_multiplier_N_[before], nodes_.multiplier_N);
+  history_.predict(step.alpha, nodes_.multiplier_N,
+                   [&](double ratio, const DofVector& last, const DofVector& before) {
+                     x = last;
+                     x.add(ratio, last, -ratio, before);
+                     x.update_ghost_values();
+                   });
   // No constraints.distribute(x): the pins and held ends constrain increments, and the
   // secant of two states that satisfy them (and the seams) satisfies them already.
 }
@@ -137,37 +135,16 @@ void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
   report.iterations = 0;
   for (const MultiplierRound& round : report.rounds) report.iterations += round.iterations;
   const double residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
-  if (!closed) {
-    // One line per round (Newton iterations, first / last residual N, largest penetration m
-    // after the update, nodes in contact).
-    std::ostringstream history;
-    history.precision(2);
-    history << std::scientific
-            << "rounds (round, Newton iterations, first / last residual N, largest penetration m "
-               "after the update, nodes in contact):";
-    for (std::size_t r = 0; r < report.rounds.size(); ++r) {
-      const MultiplierRound& round = report.rounds[r];
-      history << "\n  " << r << "  " << round.iterations << "  " << round.residual_N.front()
-              << " / " << round.residual_N.back() << "  " << round.penetration_m << "  "
-              << round.n_in_contact;
-    }
-    std::ostringstream what;
-    what << "the contact gap did not close (largest penetration " << max_penetration_m_
-         << " m, Solver/Gap tolerance " << parameters_.stop.gap_tolerance_m << " m) after "
-         << parameters_.max_augmented_lagrangian_iterations << " augmented-Lagrangian updates";
-    throw_step_failure(StopReason::gap_not_closed, step, what.str(), residual_N,
-                       newton.tolerance_N(), history.str());
-  }
+  if (!closed)
+    throw_step_failure(StopReason::gap_not_closed, step,
+                       gap_not_closed_text(report, parameters_.stop.gap_tolerance_m), residual_N,
+                       newton.tolerance_N());
   if (had_contact_ && report.n_in_contact == 0)
     throw_step_failure(StopReason::contact_lost, step, "contact lost", residual_N,
                        newton.tolerance_N());
   commit_friction(x);
   had_contact_ = had_contact_ || report.n_in_contact > 0;
-  secant_.record(step.alpha, report.n_in_contact > 0);
-  if (report.n_in_contact > 0) {
-    history_x_[secant_.newest()] = x;
-    history_multiplier_N_[secant_.newest()] = nodes_.multiplier_N;
-  }
+  history_.record(step.alpha, report.n_in_contact > 0, x, nodes_.multiplier_N);
 }
 
 }  // namespace tightfit

@@ -14,7 +14,6 @@
 #include "fem/newton_solver.h"
 #include "fem/pattern_mesh.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -70,10 +69,8 @@ class ContactRounds {
   double max_penetration_m_ = 0.0;
   bool had_contact_ = false;
   // The last two converged steps in contact (DoF positions, this rank's multipliers), in the
-  // secant's order (core/load_step.h).
-  AlphaSecant secant_;
-  std::array<DofVector, 2> history_x_;
-  std::array<std::vector<double>, 2> history_multiplier_N_;
+  // secant's predictor (core/load_step.h).
+  AlphaHistory<DofVector> history_;
   std::vector<Vec3> friction_force_N_;
   int n_slipping_ = 0;
 };

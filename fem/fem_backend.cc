@@ -5,6 +5,7 @@
 #include "fem/fem_backend.h"
 
 #include "contact/nodal_contact.h"
+#include "core/load_step_report.h"
 #include "core/tension_scale.h"
 #include "fem/contact_rounds.h"
 #include "fem/fem_constraints.h"
@@ -19,9 +20,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <petscsys.h>
-
-#include <chrono>
-#include <ctime>
 
 namespace tightfit {
 
@@ -140,15 +138,9 @@ class FemBackend::Implementation {
 };
 
 StepReport FemBackend::Implementation::solve(const LoadStep& step) {
-  const auto start = std::chrono::steady_clock::now();
-  // This rank's CPU time too: on a shared machine the wall time says little.
-  const std::clock_t cpu_start = std::clock();
+  const StepClock clock;  // this rank's CPU time
   StepReport report;
-  report.backend = "fem";
-  report.step_index = step.index;
-  report.alpha = step.alpha;
-  report.tolerance_N = newton_.tolerance_N();
-  report.stop_norm = parameters_.stop.norm;
+  write_step_header("fem", step, newton_.tolerance_N(), parameters_.stop.norm, report);
   NewtonLog& log = log_ = NewtonLog{};
   const NewtonSolver::Assembler assemble = [this, &step](const DofVector& x, bool with_tangent) {
     assembly_.assemble(x, contact_.nodes(), parameters_.tangent_shift_N_per_m, with_tangent,
@@ -185,9 +177,7 @@ StepReport FemBackend::Implementation::solve(const LoadStep& step) {
   if (parameters_.element_degree != 1)
     report.note = "vertex forces are the recovered traction (degree " +
                   std::to_string(parameters_.element_degree) + ")";
-  report.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  report.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  clock.read(report);
   return report;
 }
 

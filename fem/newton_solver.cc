@@ -3,6 +3,7 @@
 #include "contact/residual_location.h"
 #include "core/interruption.h"
 #include "core/load_step.h"
+#include "core/load_step_report.h"
 #include "core/residual_history.h"
 #include "core/rigid_motion_fit.h"
 
@@ -18,11 +19,7 @@ namespace tightfit {
 
 void throw_step_failure(StopReason reason, const LoadStep& step, const std::string& what,
                         double residual_N, double tolerance_N, const std::string& details) {
-  std::ostringstream out;
-  out << "fem backend, load step " << step.index << " (alpha " << step.alpha << "): " << what
-      << "; residual " << residual_N << " N (tolerance " << tolerance_N << " N)";
-  if (!details.empty()) out << "; " << details;
-  throw SolverError(reason, out.str());
+  throw load_step_failure(reason, "fem backend", step, what, residual_N, tolerance_N, details);
 }
 
 namespace {
@@ -33,7 +30,7 @@ double stop_threshold_N(const FemParameters& parameters, double stiffness_force_
                         double tension_scale_N) {
   double threshold_N = std::numeric_limits<double>::infinity();
   if (parameters.stop.relative_tolerance > 0.0)
-    threshold_N = parameters.stop.relative_tolerance * tension_scale_N;
+    threshold_N = relative_threshold_N(parameters.stop, tension_scale_N);
   if (parameters.residual_tolerance > 0.0)
     threshold_N = std::min(threshold_N, parameters.residual_tolerance * stiffness_force_N);
   if (!std::isfinite(threshold_N))
@@ -54,7 +51,7 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
       tolerance_N_(stop_threshold_N(parameters, stiffness_scale_N_per_m * pattern.mean_edge_m,
                                     tension_scale_N)),
       shared_tolerance_N_(parameters.stop.relative_tolerance > 0.0
-                              ? parameters.stop.relative_tolerance * tension_scale_N
+                              ? relative_threshold_N(parameters.stop, tension_scale_N)
                               : tolerance_N_),
       body_(body),
       comm_(comm),

@@ -1,5 +1,6 @@
 #include "massspring/massspring_backend.h"
 #include "core/interruption.h"
+#include "core/load_step_report.h"
 
 #include "bodies/rigid_body.h"
 #include "contact/nodal_contact.h"
@@ -13,9 +14,7 @@
 #include "massspring/stable_time_step.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <ctime>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -55,8 +54,8 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   held_turn_ = HeldTurn(problem_.constraints, n);
   size_m_ = std::sqrt(rest_area(mesh));
   // Stop rule: a force relative to the tension scale Y h^2 / L (core/garment.h says why).
-  tolerance_N_ =
-      parameters_.stop.relative_tolerance * tension_scale_N(mesh, problem_.law->stiffness_scale());
+  tolerance_N_ = relative_threshold_N(parameters_.stop,
+                                      tension_scale_N(mesh, problem_.law->stiffness_scale()));
   // Standard gravity, so the limit is the same with gravity on or off.
   const double weight_N = std::accumulate(mass_kg_.begin(), mass_kg_.end(), 0.0) * 9.80665;
   net_force_limit_N_ = parameters_.net_force_tolerance * weight_N;
@@ -103,26 +102,21 @@ void MassSpringBackend::set_positions(const std::vector<Vec3>& positions_m) {
                                 std::to_string(problem_.mesh->n_vertices) + " vertices");
   x_ = positions_m;
   std::fill(v_.begin(), v_.end(), Vec3::Zero());
-  secant_.forget();
+  history_.forget();
   // A garment placed anew sticks where it first touches: its anchors are its closest points.
   if (problem_.body) friction_.place(*problem_.body, x_);
 }
 
 void MassSpringBackend::predict(double alpha) {
-  const double ratio = secant_.ratio(alpha);
-  if (ratio == 0.0) return;
-  const int last = secant_.newest(), before = 1 - last;
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    x_[i] = settled_x_[last][i] + ratio * (settled_x_[last][i] - settled_x_[before][i]);
-  AlphaSecant::extrapolate_multipliers(ratio, settled_multiplier_N_[last],
-                                       settled_multiplier_N_[before], multiplier_N_);
+  history_.predict(
+      alpha, multiplier_N_,
+      [&](double ratio, const std::vector<Vec3>& last, const std::vector<Vec3>& before) {
+        for (std::size_t i = 0; i < x_.size(); ++i) x_[i] = last[i] + ratio * (last[i] - before[i]);
+      });
 }
 
 void MassSpringBackend::record_settled(double alpha, bool in_contact) {
-  secant_.record(alpha, in_contact);
-  if (!in_contact) return;
-  settled_x_[secant_.newest()] = x_;
-  settled_multiplier_N_[secant_.newest()] = multiplier_N_;
+  history_.record(alpha, in_contact, x_, multiplier_N_);
 }
 
 Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slipping,
@@ -209,7 +203,7 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   const std::size_t n = x.size();
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
-  double largest_squared = 0.0, total_squared = 0.0;
+  ResidualSize size;  // the stop rule's size of the field (core/load_step.h)
   Vec3 net_N = Vec3::Zero();
   largest_multiplier_change_N_ = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -220,24 +214,17 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     }
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
-    const double squared = force[i].squaredNorm();
-    largest_squared = std::max(largest_squared, squared);
-    total_squared += squared;  // std::max drops NaN; a sum keeps it
+    size.add(force[i].norm());
     net_N += force[i];
   }
   if (held_turn_.active()) {
     // The held turn's reaction (core/held_turn.h) is part of the residual the rule reads.
     held_turn_.remove_from_forces(x, mass_kg_, force);
-    largest_squared = total_squared = 0.0;
-    for (const Vec3& f : force) {
-      largest_squared = std::max(largest_squared, f.squaredNorm());
-      total_squared += f.squaredNorm();
-    }
+    size = ResidualSize();
+    for (const Vec3& f : force) size.add(f.norm());
   }
-  if (!std::isfinite(total_squared)) return std::numeric_limits<double>::quiet_NaN();
-  const double norm_N = parameters_.stop.norm == StopNorm::rms
-                            ? std::sqrt(total_squared / double(n))
-                            : std::sqrt(largest_squared);
+  const double norm_N = size.read(parameters_.stop.norm, double(n));
+  if (std::isnan(norm_N)) return norm_N;  // a force not finite
   if (!(net_force_limit_N_ > 0)) return norm_N;
   // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
   return std::max(norm_N, net_N.norm() * tolerance_N_ / net_force_limit_N_);
@@ -474,9 +461,7 @@ struct MassSpringBackend::StepRun {
   StepRun(const MassSpringParameters& p)
       : history(p.stall_window_frames, p.stall_fall),
         sliding(p.integrator == Integrator::rk4 && p.slide_damping_per_s > 0) {}
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  // The process's CPU time too: on a shared machine the wall time says little.
-  std::clock_t cpu_start = std::clock();
+  StepClock clock;
   LoadStep step;
   std::vector<Vec3> start_x;
   double runaway_m = 0.0;  // particles further than this from start_x have diverged
@@ -497,17 +482,17 @@ struct MassSpringBackend::StepRun {
 SolverError MassSpringBackend::step_failure(StopReason reason, const std::string& what,
                                             bool with_history) const {
   const StepRun& run = *run_;
-  std::ostringstream message;
-  message << "mass spring: " << step_name(run.step) << " " << what << " at frame " << run.frame
-          << " (residual " << run.residual_N << " N, tolerance " << tolerance_N_ << " N, time step "
-          << time_step_s_ << " s)";
+  std::ostringstream details;
+  details << "time step " << time_step_s_ << " s";
   if (with_history) {
     // Where the residual sits and whether the garment as a whole is still pushed (a slide).
     residual_forces(x_, run.step.gravity_on, force_);
-    message << "; " << text(locate_residual(x_, force_, problem_.body)) << "; "
+    details << "; " << text(locate_residual(x_, force_, problem_.body)) << "; "
             << run.history.text();
   }
-  return SolverError(reason, message.str());
+  return load_step_failure(reason, "mass spring", run.step,
+                           what + " at frame " + std::to_string(run.frame), run.residual_N,
+                           tolerance_N_, details.str());
 }
 
 void MassSpringBackend::run_flat_start(const LoadStep& step, StepReport& report) {
@@ -677,14 +662,10 @@ void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) 
   const int slipping = commit_friction_anchors();
   // How many vertices the committed friction anchors let slide (Coulomb cone reached).
   report.n_slipping = friction_.active() ? slipping : -1;
-  report.backend = "mass spring";
-  report.step_index = step.index;
-  report.alpha = step.alpha;
+  write_step_header("mass spring", step, tolerance_N_, parameters_.stop.norm, report);
   report.stop_reason = StopReason::converged;
   report.iterations = report.flat_start.frames + run.frame;
   report.residual_N = run.residual_N;
-  report.tolerance_N = tolerance_N_;
-  report.stop_norm = parameters_.stop.norm;
   if (implicit) {
     report.has_newton = true;
     report.newton.first_pseudo_time_step_s = 1.0 / damping_per_s_;
@@ -699,9 +680,7 @@ void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) 
     r.damping_per_s = damping_per_s_;
     if (run.halvings > 0) r.stall_history = run.history.text();
   }
-  report.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
-  report.cpu_seconds = double(std::clock() - run.cpu_start) / CLOCKS_PER_SEC;
+  run.clock.read(report);
 }
 
 StepReport MassSpringBackend::solve(const LoadStep& step) {
@@ -743,15 +722,13 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
     return penetration_m;
   };
   if (!rounds.run(report)) {
-    std::ostringstream what;
-    what << "kept a penetration of " << report.largest_penetration_m << " m (Solver/Gap tolerance "
-         << parameters_.stop.gap_tolerance_m << " m) after " << report.multiplier_updates
-         << " contact multiplier updates (" << text(report.rounds)
-         << "; their settles stop once below Mass spring/Inexact contact rounds times the next "
-            "update's largest change)";
+    const std::string what =
+        gap_not_closed_text(report, parameters_.stop.gap_tolerance_m) +
+        " (their settles stop once below Mass spring/Inexact contact rounds times the next "
+        "update's largest change)";
     // Where the residual sits: a garment still moving over the body (a creep round a limb)
     // keeps changing the gaps each update closes.
-    throw step_failure(StopReason::gap_not_closed, what.str(), true);
+    throw step_failure(StopReason::gap_not_closed, what, true);
   }
   if (parameters_.integrator == Integrator::implicit)
     record_settled(step.alpha, report.n_in_contact > 0);

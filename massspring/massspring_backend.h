@@ -158,11 +158,9 @@ class MassSpringBackend final : public Backend {
   DampedRk4 integrator_;
   StaticNewton newton_;
   // Implicit integrator: the stable states (and multipliers) of the last two load steps in
-  // contact, from which each step's start is extrapolated in alpha (core/load_step.h; the
-  // secant's newest() says which is the last); set_positions forgets them.
-  AlphaSecant secant_;
-  std::vector<Vec3> settled_x_[2];
-  std::vector<double> settled_multiplier_N_[2];
+  // contact, from which each step's start is extrapolated in alpha (core/load_step.h);
+  // set_positions forgets them.
+  AlphaHistory<std::vector<Vec3>> history_;
   // Moves x_ and multiplier_N_ to the secant's extrapolation at `alpha`.
   void predict(double alpha);
   // Keeps the state just settled at `alpha` for the secant (a step in contact).
