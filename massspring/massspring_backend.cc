@@ -706,9 +706,9 @@ StepReport MassSpringBackend::solve(const LoadStep& step) {
                  parameters_.inexact_round_fraction > 0 &&
                  (parameters_.integrator == Integrator::rk4 || rk4_assists_newton());
   final_settle_next_ = !inexact;
-  // An inexact round whose update leaves more than a quarter of the last update's penetration settles
-  // exactly from then on: a slow mode still moving under the early stops (the stocking at half
-  // resolution, 16 mm x 30 mm, sliding round the ankle) keeps reopening the gaps each update
+  // An inexact round whose update leaves more than a quarter of the last update's penetration
+  // settles exactly from then on: a slow mode still moving under the early stops (the stocking at
+  // half resolution, 16 mm x 30 mm, sliding round the ankle) keeps reopening the gaps each update
   // closes, where the exact rounds close them 25-fold per update (docs/stocking.md).
   constexpr double inexact_gap_fall = 0.25;
   double last_update_penetration_m = std::numeric_limits<double>::infinity();
