@@ -151,6 +151,16 @@ TEST(GarmentRegressions, LandmarkStockingOnTheMaleOnFe) {
   expect_means(means, {{"B", 2752.89}, {"C", 1564.01}, {"G", 817.72}}, 1e-4);
 }
 
+// The landmark-cut stocking on MakeHuman's female on FE with the case's entries, its turn held:
+// against the mass-spring backend's means (`tightfit run cases/stocking_female_landmarks.prm`:
+// B 3376.02, C 1678.67, G 890.49 Pa); measured FE B 3376.06, C 1678.68, G 890.48 Pa in 51 Newton
+// iterations, 1.2e-5 apart at most: 1e-4 allowed (the shared stop rule's strain error bounds
+// both states). The designs of docs/design.md are checked on this case.
+TEST(GarmentRegressions, LandmarkStockingOnFe) {
+  const auto means = region_means_Pa("cases/stocking_female_landmarks.prm", {}, "fem");
+  expect_means(means, {{"B", 3376.02}, {"C", 1678.67}, {"G", 890.49}}, 1e-4);
+}
+
 // The stocking cut and placed from the body's landmarks (cases/stocking_female_landmarks.prm)
 // with default settings, every vertex held along the leg and the tube's mean turn round it held
 // (docs/backends.md, "The held turn"). Against the free tube's equilibrium, reached with the
