@@ -21,19 +21,25 @@ HeldTurn::HeldTurn(const std::vector<VertexConstraint>& constraints, int n_verti
   axis_ = first->direction.normalized();
 }
 
+bool HeldTurn::centre_of_mass(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
+                              Vec3& centre) {
+  double mass = 0.0;
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sum += mass_kg[i] * x[i];
+    mass += mass_kg[i];
+  }
+  if (!(mass > 0)) return false;
+  centre = sum / mass;
+  return true;
+}
+
 double HeldTurn::turn_rate(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
                            const std::vector<Vec3>& field, bool weighted, Vec3& centre,
                            double& inertia) const {
   if (x.size() != mass_kg.size() || x.size() != field.size())
     throw std::invalid_argument("HeldTurn: positions, masses and field differ in size");
-  double mass = 0.0;
-  centre = Vec3::Zero();
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    centre += mass_kg[i] * x[i];
-    mass += mass_kg[i];
-  }
-  if (!(mass > 0)) return 0.0;
-  centre /= mass;
+  if (!centre_of_mass(x, mass_kg, centre)) return 0.0;
   double moment = 0.0;
   inertia = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {

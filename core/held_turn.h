@@ -33,6 +33,10 @@ class HeldTurn {
   // Returns the torque removed, N m.
   double remove_from_forces(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
                             std::vector<Vec3>& force) const;
+  // The vertices' centre of mass (m), the point the held axis passes through; false (and
+  // `centre` unset) when their mass is not positive.
+  static bool centre_of_mass(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
+                             Vec3& centre);
   // Removes the turn from `velocity` (m/s): afterwards sum_i m_i t_i . v_i = 0.
   void remove_from_velocities(const std::vector<Vec3>& x, const std::vector<double>& mass_kg,
                               std::vector<Vec3>& velocity) const;

@@ -352,12 +352,7 @@ void MassSpringBackend::held_turn_mode(const std::vector<Vec3>& x, Eigen::Vector
   // w_i = m_i a x (x_i - c), c the centre of mass (core/held_turn.h): the increments keep the
   // garment's mean turn about the held axis, as RK4's velocities do.
   Vec3 centre = Vec3::Zero();
-  double mass = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    centre += mass_kg_[i] * x[i];
-    mass += mass_kg_[i];
-  }
-  centre /= mass;
+  HeldTurn::centre_of_mass(x, mass_kg_, centre);
   w.resize(3 * Eigen::Index(x.size()));
   for (std::size_t i = 0; i < x.size(); ++i)
     w.segment<3>(3 * i) = mass_kg_[i] * held_turn_.axis().cross(x[i] - centre);
