@@ -21,7 +21,7 @@ packages=(
   libcgal-dev                    # AABB trees, 2D constrained Delaunay meshing
   libpugixml-dev nlohmann-json3-dev libdxflib-dev  # SVG, JSON and DXF pattern files
   libgtest-dev libbenchmark-dev  # tests and benchmarks
-  gnuplot-nox                    # plots
+  gnuplot-nox                    # the charts of scripts/plots/ (not tightfit itself)
 )
 reference_blas=false
 for option in "$@"; do

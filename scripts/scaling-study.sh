@@ -14,9 +14,9 @@
 # mpirun the largest rank: memory per rank), which includes the program's libraries (about
 # 60 MB).
 #
-# Writes docs/figures/scaling.csv, docs/figures/scaling.png (gnuplot) and the fitted exponents
-# (least squares of log time against log vertex count, meshes of 2000 vertices and more) to
-# docs/figures/scaling_fit.txt. Runs under `nice`, one configuration at a time.
+# Writes docs/figures/scaling.csv, docs/figures/scaling.png (gnuplot, scripts/plots/scaling.gp)
+# and the fitted exponents (least squares of log time against log vertex count, meshes of 2000
+# vertices and more) to docs/figures/scaling_fit.txt. Runs under `nice`, one configuration at a time.
 #
 # Usage: scripts/scaling-study.sh [SCALE ...]
 #   SCALE: mesh scales, default 1 0.5 0.25 0.18 0.125 0.09 0.073 (552 to 96600 vertices)
@@ -40,8 +40,9 @@
 # garment's mesh, after the backend's setup, and its peak. Writes
 # docs/figures/scaling_gamg.csv (the largest rank's numbers), the fitted exponents of CPU time
 # and of the peak above the floor against the vertex count to docs/figures/scaling_gamg_fit.txt,
-# and docs/figures/scaling_gamg.png. The table's last column is the largest rank's peak during
-# the setup (the triangulation and DoF handler alive), before the solve.
+# and docs/figures/scaling_gamg.png (scripts/plots/scaling_gamg.gp). The table's last column is
+# the largest rank's peak during the setup (the triangulation and DoF handler alive), before the
+# solve.
 #   GAMG_MEMORY (default fast): the bench's `Finite elements/Iterative solver memory`; "lean"
 #   writes scaling_gamg_lean.csv, _fit.txt and .png instead.
 #   PLOT_ONLY=1: no runs; fit and draw the existing table again.
@@ -147,23 +148,8 @@ if [[ -f $gamg_table ]]; then
                           k, (n[k] * sxt[k] - sx[k] * st[k]) / d, (n[k] * sxm[k] - sx[k] * sm[k]) / d, n[k] } }' \
     "$gamg_table" | sort | tee "$figures/scaling_gamg${gamg_suffix}_fit.txt"
   if command -v gnuplot >/dev/null; then
-    gnuplot <<GNUPLOT
-set terminal pngcairo size 1200,500
-set output "$figures/scaling_gamg${gamg_suffix}.png"
-set datafile separator ","
-set multiplot layout 1,2 title "4 5T tube from a start in contact at alpha 1.1, CG/GMRES + GAMG ($gamg_memory), the solver footprint bench"
-set logscale xy
-set xlabel "vertices"
-set grid
-set key top left
-sel(np) = sprintf("< awk -F, '\$1 == %d && \$11 == 0' $gamg_table", np)
-set ylabel "CPU time of the step [s] (rank 0)"
-plot sel(1) using 3:5 with linespoints title "1 rank", sel(2) using 3:5 with linespoints title "2 ranks"
-set ylabel "peak resident set per rank [MB]"
-plot sel(1) using 3:9 with linespoints title "1 rank, total", sel(2) using 3:9 with linespoints title "2 ranks, total (largest rank)", \
-     sel(1) using 3:10 with linespoints dashtype 2 title "1 rank, above the floor", sel(2) using 3:10 with linespoints dashtype 2 title "2 ranks, above the floor"
-unset multiplot
-GNUPLOT
+    gnuplot -e "csv='$gamg_table'; out='$figures/scaling_gamg${gamg_suffix}.png'; \
+      memory='$gamg_memory'" scripts/plots/scaling_gamg.gp
   fi
 fi
 [[ $study == gamg ]] && exit 0
@@ -199,23 +185,7 @@ awk -F, 'NR > 1 && $11 == 0 && $4 >= 2000 && $5 > 0 {
   "$table" | sort | tee "$fit"
 
 if command -v gnuplot >/dev/null; then
-  gnuplot <<GNUPLOT
-set terminal pngcairo size 900,600
-set output "$figures/scaling${suffix:+_blas}.png"
-set datafile separator ","
-set logscale xy
-set xlabel "vertices"
-set ylabel "CPU time of the load step [s]"
-set key top left
-set grid
-set title "4 5T tube: first state in contact (alpha 1.0 -> 1.05), one core unless stated"
-sel(r, np) = sprintf("< awk -F, '\$1 == \"%s\" && \$2 == %d && \$11 == 0' $table", r, np)
-plot sel("massspring-implicit$suffix", 1) using 4:5 with linespoints title "mass-spring, implicit", \
-     sel("massspring-rk4$suffix", 1) using 4:5 with linespoints title "mass-spring, RK4", \
-     sel("fem-direct$suffix", 1) using 4:5 with linespoints title "FE, MUMPS, 1 rank", \
-     sel("fem-direct$suffix", 2) using 4:5 with linespoints title "FE, MUMPS, 2 ranks (rank 0)", \
-     sel("fem-cg-amg$suffix", 1) using 4:5 with linespoints title "FE, CG + BoomerAMG", \
-     [2000:100000] 0.5 * (x / 8460.0)**1.5 with lines dashtype 2 title "N^{1.5}"
-GNUPLOT
+  gnuplot -e "csv='$table'; out='$figures/scaling${suffix:+_blas}.png'; suffix='$suffix'" \
+    scripts/plots/scaling.gp
 fi
 echo "table $table, fits $fit, figure $figures/scaling${suffix:+_blas}.png"
