@@ -7,6 +7,7 @@
 #include "core/step_report.h"
 #include "core/surface_state.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -57,16 +58,38 @@ struct LoadStep {
   bool gravity_on = false;
 };
 
-// Thrown when a backend cannot reach equilibrium; the message names the step and residual,
-// reason() says why as a field (core/step_report.h).
+// Which load step failed and how far from the stop rule, as fields (load_step_failure,
+// core/load_step_report.h, fills them); step_index -1: the error did not come from a load
+// step's solve (a dressing, a placement), or the fields were not kept.
+struct StepFailure {
+  std::string backend;  // "mass spring", "fem backend"
+  int step_index = -1;
+  double alpha = 0.0;
+  double residual_N = 0.0;   // the stop rule's residual when the step gave up
+  double tolerance_N = 0.0;  // the stop rule's threshold
+};
+
+// Thrown when a backend cannot reach equilibrium; the message names the step and residual for
+// the user, reason() and failure() say why and where as fields (core/step_report.h), for the
+// code and the tests.
 class SolverError : public std::runtime_error {
  public:
   SolverError(StopReason reason, const std::string& message)
       : std::runtime_error(message), reason_(reason) {}
+  SolverError(StopReason reason, const std::string& message, const StepFailure& failure)
+      : std::runtime_error(message),
+        reason_(reason),
+        failure_(std::make_shared<const StepFailure>(failure)) {}
   StopReason reason() const { return reason_; }
+  const StepFailure& failure() const {
+    static const StepFailure none;
+    return failure_ ? *failure_ : none;
+  }
 
  private:
   StopReason reason_;
+  // Shared, so that copying the exception cannot throw (as std::runtime_error's message).
+  std::shared_ptr<const StepFailure> failure_;
 };
 
 class Backend {

@@ -34,7 +34,8 @@ SolverError load_step_failure(StopReason reason, const std::string& backend, con
   out << backend << ", load step " << step.index << " (alpha " << step.alpha << "): " << what
       << "; residual " << residual_N << " N (tolerance " << tolerance_N << " N)";
   if (!details.empty()) out << "; " << details;
-  return SolverError(reason, out.str());
+  return SolverError(reason, out.str(),
+                     StepFailure{backend, step.index, step.alpha, residual_N, tolerance_N});
 }
 
 }  // namespace tightfit

@@ -42,7 +42,7 @@ std::string gap_not_closed_text(const StepReport& report, double gap_tolerance_m
 
 // The error a backend throws when a load step fails, its message
 // "<backend>, load step <index> (alpha <alpha>): <what>; residual <r> N (tolerance <t> N)"
-// followed by "; <details>" when there are any.
+// followed by "; <details>" when there are any; the same as fields in its failure().
 SolverError load_step_failure(StopReason reason, const std::string& backend, const LoadStep& step,
                               const std::string& what, double residual_N, double tolerance_N,
                               const std::string& details = "");

@@ -52,6 +52,16 @@ TEST(LoadStepReport, FailureNamesTheStepTheResidualAndTheRounds) {
   const SolverError error = load_step_failure(StopReason::gap_not_closed, "mass spring",
                                               LoadStep{7, 1.8, false}, what, 4e-5, 2e-5, "more");
   EXPECT_EQ(error.reason(), StopReason::gap_not_closed);
+  // The same as fields, for code and tests that must not read the message.
+  EXPECT_EQ(error.failure().backend, "mass spring");
+  EXPECT_EQ(error.failure().step_index, 7);
+  EXPECT_EQ(error.failure().alpha, 1.8);
+  EXPECT_EQ(error.failure().residual_N, 4e-5);
+  EXPECT_EQ(error.failure().tolerance_N, 2e-5);
+  // Copied (as a catch by value does), the fields stay; an error not from a step has none.
+  const SolverError copy = error;
+  EXPECT_EQ(copy.failure().step_index, 7);
+  EXPECT_EQ(SolverError(StopReason::passed_into_body, "dressing").failure().step_index, -1);
   const std::string message = error.what();
   EXPECT_EQ(message.find("mass spring, load step 7 (alpha 1.8): " + what), 0u) << message;
   EXPECT_NE(message.find("; residual 4e-05 N (tolerance 2e-05 N); more"), std::string::npos)
