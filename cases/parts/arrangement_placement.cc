@@ -177,11 +177,9 @@ PartEntry<PlacementMaker> arrangement_placement_entry() {
     a.options.start_scale = prm.get_double("Start scale");
     a.options.clearance = prm.get_double("Clearance");
     a.options.side_seam_below_armpit_m = prm.get_double("Side seam below armpit");
-    a.coarse_m =
-        auto_or_number(prm.get("Coarse edge length"), std::string(section) + "/Coarse edge length");
+    a.coarse_m = auto_or_number(prm.get("Coarse edge length"), "Coarse edge length");
     if (a.coarse_m && !(*a.coarse_m >= 0))
-      throw std::invalid_argument(std::string(section) +
-                                  "/Coarse edge length: must be auto or a length >= 0 (m)");
+      throw std::invalid_argument("Coarse edge length: must be auto or a length >= 0 (m)");
     a.dressing.start_scale = a.options.start_scale;
     read_dressing_frames(prm, a.dressing);
     a.dressing.progress = &std::cout;
