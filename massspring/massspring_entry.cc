@@ -13,11 +13,13 @@
 namespace tightfit {
 
 namespace {
-// Whether the case dresses its garment from afar round the body's limbs (a handler without a
-// Placement subsection, as a test's, does not).
-bool dressed_round_limbs(const dealii::ParameterHandler& prm) {
+// Whether the case dresses its garment from afar, arranged from the body's landmarks round its
+// limbs or its torso (a handler without a Placement subsection, as a test's, does not): there
+// the stick damper is on by default on a faceted body (massspring_parameters.h).
+bool arranged_from_landmarks(const dealii::ParameterHandler& prm) {
   try {
-    return prm.get(std::vector<std::string>{"Placement"}, "Kind") == "pattern arrangement";
+    const std::string kind = prm.get(std::vector<std::string>{"Placement"}, "Kind");
+    return kind == "pattern arrangement" || kind == "arrangement";
   } catch (...) {
     return false;
   }
@@ -39,7 +41,7 @@ BackendEntry massspring_backend_entry() {
   entry.create = [](const Problem& problem, const StopRule& stop,
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
     MassSpringParameters parameters;
-    parameters.parse_parameters(prm, stop.faceted_body, dressed_round_limbs(prm));
+    parameters.parse_parameters(prm, stop.faceted_body, arranged_from_landmarks(prm));
     parameters.stop = stop;
     parameters.validate();
     return std::make_unique<MassSpringBackend>(problem, parameters);

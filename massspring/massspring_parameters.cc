@@ -130,8 +130,9 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "stuck vertex ringing on its friction spring in a crease between two body "
                     "parts (docs/cookbook-jumpsuit.md), not a slipping vertex; the stop rule's "
                     "residual leaves it out. 0 = off. RK4 only. auto: 0.5 on a body mesh with "
-                    "Body/Mesh/Contact surface = faceted for a garment dressed round the limbs "
-                    "(Placement/Kind = pattern arrangement), 0 elsewhere.");
+                    "Body/Mesh/Contact surface = faceted for a garment arranged from the body's "
+                    "landmarks (Placement/Kind = pattern arrangement or arrangement), 0 "
+                    "elsewhere.");
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),
                     "Frames of the paper's quasi-static start (Section 4.3: velocity reset to "
                     "zero every frame) before damped RK4 takes over; the start also ends when "
@@ -205,7 +206,7 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
 }
 
 void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool faceted_body,
-                                            bool dressed_round_limbs) {
+                                            bool arranged_from_landmarks) {
   const MassSpringParameters d = faceted_body ? on_faceted_body() : MassSpringParameters{};
   prm.enter_subsection("Mass spring");
   integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
@@ -240,7 +241,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   contact_normal_damping_ratio =
       auto_or(contact_damping_text, "Contact normal damping ratio", d.contact_normal_damping_ratio);
   contact_stick_damping_ratio = auto_or(stick_damping_text, "Contact stick damping ratio",
-                                        faceted_body && dressed_round_limbs ? 0.5 : 0.0);
+                                        faceted_body && arranged_from_landmarks ? 0.5 : 0.0);
   net_force_tolerance = auto_or(net_force_text, "Net force tolerance", d.net_force_tolerance);
   validate();
 }

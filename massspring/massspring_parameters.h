@@ -85,7 +85,9 @@ struct MassSpringParameters {
   // tangential penalty stiffness. That spring is as stiff as the contact spring and the mass
   // damping is a hundredth of its critical damping: a stuck vertex in a crease between two
   // body parts (an armpit, the crotch) rings on it for thousands of frames and holds the rms
-  // residual above the stop rule (docs/cookbook-jumpsuit.md). A slipping vertex is not damped,
+  // residual above the stop rule (docs/cookbook-jumpsuit.md); on a compression top the stuck
+  // vertices on the body's flat faces ring so and stall its settle (docs/cookbook-dressed-top.md).
+  // A slipping vertex is not damped,
   // so neither is a slide; the force is left out of the residual. 0: off.
   double contact_stick_damping_ratio = 0.0;
   // Frames of the paper's quasi-static start (velocity reset to zero every frame) before the
@@ -153,10 +155,11 @@ struct MassSpringParameters {
   // Reads the "Mass spring" subsection (not `stop`: the caller sets it from the Solver one);
   // the entries at auto take on_faceted_body()'s values when `faceted_body`, the ones above
   // otherwise.
-  // `dressed_round_limbs`: the garment is dressed from afar round the body's limbs
-  // (Placement/Kind = pattern arrangement), where the auto stick damping is on.
+  // `arranged_from_landmarks`: the garment is dressed from afar, arranged from the body's
+  // landmarks round its limbs or torso (Placement/Kind = pattern arrangement or arrangement),
+  // where the auto stick damping is on.
   void parse_parameters(dealii::ParameterHandler& prm, bool faceted_body = false,
-                        bool dressed_round_limbs = false);
+                        bool arranged_from_landmarks = false);
 };
 
 }  // namespace tightfit

@@ -153,19 +153,19 @@ TEST(MassSpringParameters, ContactNormalDampingRatioIsReadAndKeptWithinCritical)
   expect_refused_naming(p, "Contact normal damping ratio");
 }
 
-// The stick damper at auto: on (0.5) only for a garment dressed round the limbs on a faceted
-// body mesh, off on a faceted body otherwise (the tops) and elsewhere; a number given wins;
-// a ratio above critical or below zero is refused naming the entry.
+// The stick damper at auto: on (0.5) only for a garment arranged from the body's landmarks
+// (round the limbs or the torso) on a faceted body mesh, off on a faceted body otherwise (the
+// tops placed by Placement/Kind = dressing) and elsewhere; a number given wins; a ratio above
+// critical or below zero is refused naming the entry.
 TEST(MassSpringParameters, ContactStickDampingIsOnAtAutoOnlyRoundLimbsOnAFacetedBody) {
   dealii::ParameterHandler prm;
   MassSpringParameters::declare_parameters(prm);
   MassSpringParameters p;
   p.parse_parameters(prm, true, true);
   EXPECT_EQ(p.contact_stick_damping_ratio, 0.5);
-  for (const auto& [faceted, round_limbs] :
-       {std::pair{true, false}, {false, true}, {false, false}}) {
-    p.parse_parameters(prm, faceted, round_limbs);
-    EXPECT_EQ(p.contact_stick_damping_ratio, 0.0) << faceted << round_limbs;
+  for (const auto& [faceted, arranged] : {std::pair{true, false}, {false, true}, {false, false}}) {
+    p.parse_parameters(prm, faceted, arranged);
+    EXPECT_EQ(p.contact_stick_damping_ratio, 0.0) << faceted << arranged;
   }
   EXPECT_EQ(MassSpringParameters{}.contact_stick_damping_ratio, 0.0);
   prm.parse_input_from_string(
