@@ -123,14 +123,14 @@ seconds() { awk -v t="$1" -v u="$2" 'BEGIN {sub(/[;(,].*/, "", u); print t * (u 
   echo "backend,level,seconds,cpu_seconds"
   for backend in $study_backends; do
     [[ -s $out/$backend/study.log ]] || continue
-    grep -E "^  $backend level [0-9]+ took " "$out/$backend/study.log" | while read -r b _ level _ t u _ c cu _; do
+    grep -E "^  $backend level [0-9]+ took " "$out/$backend/study.log" | while read -r b _ level _ t u c cu _; do
       echo "$b,$level,$(seconds "$t" "$u"),$(seconds "${c#(}" "$cu")"
     done
   done
 } >"$figures/${name}_times.csv"
 if [[ -n $plot_regions ]]; then
   for backend in $study_backends; do
-    [[ -s $out/$backend/convergence_regions.csv ]] || continue
+    grep -q "^$backend," "$out/$backend/convergence_regions_summary.csv" 2>/dev/null || continue
     suffix=$([[ $backend == massspring ]] || echo "_$backend")
     gnuplot -e "levels='$figures/${name}_regions.csv'; summary='$figures/${name}_regions_summary.csv'; \
       out='$figures/$name$suffix.png'; regions='$plot_regions'; backend='$backend'" \
