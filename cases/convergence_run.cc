@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -106,11 +107,19 @@ double relative(double value, double reference) {
   return has_closed_form(reference) ? (value - reference) / reference : not_defined;
 }
 
-// A level's scenario, made once for every backend's run, and the wall time making it took, s.
+// The process's CPU time so far, s (every thread's; on a machine shared with other work the
+// measure of a level's cost, where the wall time also counts the others').
+double process_cpu_seconds() {
+  return double(std::clock()) / CLOCKS_PER_SEC;
+}
+
+// A level's scenario, made once for every backend's run, and the wall and CPU time making it
+// took, s.
 struct MadeLevel {
   std::unique_ptr<Scenario> scenario;
   int n_vertices = 0;
   double seconds = 0.0;
+  double cpu_seconds = 0.0;
 };
 
 // Before a long study: the size of each level, so that a user sees what is coming.
@@ -170,9 +179,11 @@ BackendConvergence run_backend_levels(std::vector<MadeLevel>& levels,
   BackendConvergence study;
   study.backend = backend.name;
   double study_seconds = 0.0;  // the levels' times so far, their scenarios' making included
+  double study_cpu_seconds = 0.0;
   std::vector<LevelTiming> timings;
   for (int level = 0; level < n_levels; ++level) {
     const clock::time_point level_start = clock::now();
+    const double level_cpu_start = process_cpu_seconds();
     Scenario* const setup = levels[level].scenario.get();
     ConvergenceLevel l;
     l.level = level;
@@ -224,11 +235,14 @@ BackendConvergence run_backend_levels(std::vector<MadeLevel>& levels,
     const std::string failure = l.run.failure;
     l.seconds =
         levels[level].seconds + std::chrono::duration<double>(clock::now() - level_start).count();
+    l.cpu_seconds = levels[level].cpu_seconds + process_cpu_seconds() - level_cpu_start;
     timings.push_back({l.n_vertices, l.seconds});
     study_seconds += l.seconds;
+    study_cpu_seconds += l.cpu_seconds;
     log << "  " << backend.name << " level " << level << " took "
-        << duration_text(timings.back().seconds) << " (this backend so far "
-        << duration_text(study_seconds) << ")";
+        << duration_text(timings.back().seconds) << " (" << duration_text(l.cpu_seconds)
+        << " of CPU; this backend so far " << duration_text(study_seconds) << ", "
+        << duration_text(study_cpu_seconds) << " of CPU)";
     if (completed && level + 1 < n_levels) {
       bool measured = false;
       const int next_vertices = levels[level + 1].n_vertices;
@@ -353,11 +367,13 @@ ConvergenceStudy run_convergence_study(const CaseParameters& parameters,
   std::vector<MadeLevel> levels;
   for (int level = 0; level < n_levels; ++level) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_seconds();
     MadeLevel made;
     made.scenario = make_scenario(convergence_level_parameters(parameters, level, settings.ratio));
     ++result.scenarios_made;
     made.n_vertices = made.scenario->mesh.n_vertices;
     made.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    made.cpu_seconds = process_cpu_seconds() - cpu_start;
     levels.push_back(std::move(made));
   }
   if (settings.on_levels_made) settings.on_levels_made(*levels.front().scenario);

@@ -91,6 +91,7 @@ struct ConvergenceLevel {
   // Wall time of the level: its run and the making of its scenario (made once for all the
   // backends, counted in each backend's level).
   double seconds = 0.0;
+  double cpu_seconds = 0.0;  // the same, the process's CPU time (every thread's)
   RunResult run;
   // The pressure in the study's regions at each step that finished, [step][region].
   std::vector<std::vector<RegionPressure>> region_pressures;

@@ -6,23 +6,26 @@
 # Usage: scripts/stocking-convergence-section.sh [FIGURES_DIR]   (default docs/figures)
 set -uo pipefail
 figures=${1:-docs/figures}
-# tables PREFIX: the levels' table and the estimates' table of the study kept as
-# docs/figures/PREFIX_regions.csv, PREFIX_regions_summary.csv and PREFIX_times.csv.
+# tables PREFIX [BACKEND]: the levels' table and the estimates' table of one backend's study
+# (default massspring) kept as docs/figures/PREFIX_regions.csv, PREFIX_regions_summary.csv and
+# PREFIX_times.csv.
 tables() {
   local levels=$figures/$1_regions.csv summary=$figures/$1_regions_summary.csv times=$figures/$1_times.csv
+  local backend=${2:-massspring}
   echo
   # Levels: size, time and each region's mean pressure with its distance from the limit: the
   # Richardson value, or the finest level's where the levels oscillate (no order, marked *).
-  awk -F, 'FNR == 1 {delete c; for (i = 1; i <= NF; i++) c[$i] = i; ++file; next}
+  awk -F, -v backend="$backend" 'FNR == 1 {delete c; for (i = 1; i <= NF; i++) c[$i] = i; ++file; next}
+    ("backend" in c) && $c["backend"] != backend {next}
     file == 1 { if (!($c["region"] in rich)) names[++nr] = $c["region"]; rich[$c["region"]] = $c["p_mean_richardson_Pa"]; next }
-    file == 2 { t[$c["level"]] = $c["seconds"]; next }
+    file == 2 { t[$c["level"]] = $c["seconds"]; if ("cpu_seconds" in c) cpu[$c["level"]] = $c["cpu_seconds"]; next }
     { l = $c["level"]; if (l > nl) nl = l; nv[l] = $c["n_vertices"]; h[l] = $c["edge_m"]; p[l, $c["region"]] = $c["p_mean_Pa"] }
     END {
-      line = "| level | vertices | mean edge [mm] | time [s] |"; rule = "| ---: | ---: | ---: | ---: |"
+      line = "| level | vertices | mean edge [mm] | time [s] | CPU [s] |"; rule = "| ---: | ---: | ---: | ---: | ---: |"
       for (k = 1; k <= nr; k++) { r = names[k]; line = line " " r " p_mean [Pa] | from " (rich[r] == "" ? "finest* " : "Richardson ") "[%] |"; rule = rule " ---: | ---: |" }
       print line; print rule
       for (l = 0; l <= nl; l++) {
-        line = sprintf("| %d | %d | %.2f | %s |", l, nv[l], 1e3 * h[l], (l in t) ? sprintf("%.0f", t[l]) : "-")
+        line = sprintf("| %d | %d | %.2f | %s | %s |", l, nv[l], 1e3 * h[l], (l in t) ? sprintf("%.0f", t[l]) : "-", (l in cpu) ? sprintf("%.0f", cpu[l]) : "-")
         for (k = 1; k <= nr; k++) { r = names[k]; v = p[l, r]; ref = (rich[r] == "") ? p[nl, r] : rich[r]
           line = line sprintf(" %.1f | %+.2f |", v, 100 * (v - ref) / ref) }
         print line }
@@ -34,7 +37,8 @@ tables() {
   # The estimates, mean and peak, and where the mean has an order, the mesh it needs to come
   # within 1% of its limit: |p_h - p_R| / p_R = e_f (h / h_f)^p, so h_1% = h_f (1 / e_f)^(1/p)
   # with e_f in %, the vertices growing as (h_f / h)^2.
-  awk -F, 'FNR == 1 {delete c; for (i = 1; i <= NF; i++) c[$i] = i; ++file; next}
+  awk -F, -v backend="$backend" 'FNR == 1 {delete c; for (i = 1; i <= NF; i++) c[$i] = i; ++file; next}
+    $c["backend"] != backend {next}
     file == 1 { if ($c["level"] >= fine) { fine = $c["level"]; n_fine = $c["n_vertices"] }; next }
     {
       if (!header++) {
@@ -59,17 +63,24 @@ cat <<'MD'
 
 The stocking (`cases/stocking_female.prm`, [stocking.md](stocking.md)) at three meshes, the
 edge lengths halved from one level to the next (the case's own mesh, `Mesh scale` 0.5 and
-0.25), on the mass-spring backend; each level's mean and peak pressure in the 2 cm bands B, C
-and G round the leg's measuring points, the observed order from the three levels, the
-Richardson estimate and Roache's GCI (safety factor 1.25) of the finest level (columns in
-cases/convergence_run.h):
+0.25), on each backend; each level's mean and peak pressure in the 2 cm bands B, C and G round
+the leg's measuring points, the observed order from the three levels, the Richardson estimate
+and Roache's GCI (safety factor 1.25) of the finest level (columns in
+cases/convergence_run.h). The mass-spring backend runs its implicit route (RK4's approach, then
+Newton: [backends.md](backends.md), "On a mesh body"), whose cost grows with the vertices
+alone, where RK4's stable time step falls with the edge; the FE backend gets 300 Newton
+iterations a round, where the case allows 60:
 
     tightfit convergence cases/stocking_female.prm --levels 3 --backends massspring \
-      --set "Measurements/List=regions, compression class" --set "Solver/Relative tolerance=5e-4"
+      --set "Measurements/List=regions, compression class" --set "Mass spring/Integrator=implicit"
+    tightfit convergence cases/stocking_female.prm --levels 3 --backends fem \
+      --set "Measurements/List=regions, compression class" \
+      --set "Finite elements/Maximum Newton iterations=300"
 
-(`scripts/stocking-convergence.sh` runs it and redraws the figure and these tables.) The times
-are wall times on a two-core machine shared with other work, where the study had about a third
-of a core (391 s of CPU for the three levels, 20 min in all).
+(`scripts/stocking-convergence.sh` runs both and redraws the figures and these tables.) Each
+level's time is the wall time and the process's CPU time (every thread's), its mesh's making
+included, on a two-core machine shared with other work: the CPU time is the cost, the wall
+time mostly the other work's.
 MD
 if [[ ! -s $figures/stocking_convergence_regions_summary.csv ]]; then
   echo
@@ -77,54 +88,93 @@ if [[ ! -s $figures/stocking_convergence_regions_summary.csv ]]; then
   exit 0
 fi
 echo
-tables stocking_convergence
+echo "### Mass spring"
+tables stocking_convergence massspring
 echo
 echo "![The bands' mean pressure against its Richardson estimate](figures/stocking_convergence.png)"
+echo
+echo "![The bands' mean pressure against the mean edge, with its estimate](figures/stocking_convergence_means.png)"
 cat <<'MD'
 
 How fine must a stocking's mesh be for B, C and G to be within 1% of the extrapolated value?
 All three bands converge monotonically, B and G at about the order of linear triangles (2.4),
 C at about first order on changes that stay small (0.5% from the coarsest level to the
 limit). By the observed orders, C is within 1% on every mesh, G from a mean edge of about
-12.7 mm (about 1500 vertices) and B from about 9.2 mm (about 2800 vertices); the 2736-vertex
+12.8 mm (about 1500 vertices) and B from about 9.3 mm (about 2800 vertices); the 2736-vertex
 mesh of the study below (`Garment/Mesh scale = 0.71`, mean edge 9.4 mm) measured all three
 within 0.6% of these estimates. So a stocking needs about 2800 vertices, a mean edge of 9 mm,
 for its bands to be within 1%; the case's own mesh (1312 vertices, 13.5 mm) reads B 2.4%,
-G 1.1% and C 0.5% low. The finest level's GCI is 0.11% (B), 0.14% (C) and 0.05% (G).
+G 1.1% and C 0.5% low. The finest level's GCI is 0.11% (B), 0.14% (C) and 0.05% (G). The
+whole study took 160 s of CPU, 144 s of it the finest level.
+
+The landmark-cut stocking (`cases/stocking_female_landmarks.prm`, the same command with
+`--levels 2`, 19 s of CPU) moves by as much from its own mesh (1280 vertices) to 5120: B +1.85%,
+C +0.10%, G +0.85% (this stocking: +2.01%, +0.29%, +0.94%), so the same mesh serves it.
+
+The same study on a mesh body whose answer is known
+(`tests/cases/test_region_convergence_on_body.cc`): garment T held round a smooth 48-sided prism
+at alpha 1.5, three levels whose hoops have 20, 40 and 80 vertices, two bands; each band's
+observed order is 2.05, its Richardson estimate 1.1e-5 from the closed form, and the finest
+level 7.74e-4 low, where the inscribed hoop predicts 7.71e-4.
 
 The whole garment's mean pressure (the first table the command prints) converges more slowly:
-observed order 0.7, its finest level 1.7% below its estimate (GCI 2.2%). Quote the bands.
+observed order 0.67, its finest level 1.8% below its estimate (GCI 2.3%). Quote the bands.
 
-The peaks do not converge: the largest vertex pressure in B falls from 11.8 to 8.7 kPa and
-rises to 9.0 kPa (one vertex at the ankle's tendons, where each mesh resolves the curvature
-differently); the bands' means are the numbers to quote.
+The peaks do not converge, and the study fits no order to B's and G's: B's largest vertex
+pressure falls from 11.7 to 8.6 kPa and rises to 8.9 kPa, G's falls from 2090 to 2076 Pa and
+rises to 2441 Pa (single vertices at the ankle's tendons and over the thigh, where each mesh
+resolves the body's curvature differently). C's rises monotonically, 3327, 3535, 3655 Pa, at an
+observed order of 0.79 whose estimate (3819 Pa, GCI 5.6%) would need about 900 000 vertices to
+be within 1%: a peak that grows as the mesh resolves a curvature has no mesh-independent
+value. The bands' means are the numbers to quote.
 
-The settle's stop rule: at the default `Solver/Relative tolerance = 1e-4` the 2736-vertex level
-(below) stalls at three times its tolerance (2.1e-5 N against 6.8e-6 N, after 12 000 frames, on
-a vertex over the shin). At 5e-4 every level finishes; on the 1312 mesh, which settles either
-way, the looser rule moves the means of B, C and G by at most 1.1e-6 of their value and the
-peaks by at most 5e-4, far below the differences between levels.
+The settle's stop rule: the implicit route meets the default `Solver/Relative tolerance = 1e-4`
+on every level. RK4 (the case's integrator) stalls at three times it on the 2736-vertex level
+of the study below (2.1e-5 N against 6.8e-6 N, after 12 000 frames, on a vertex over the shin);
+at 5e-4 (`--set "Solver/Relative tolerance=5e-4"` in place of the integrator) it settles the
+three levels in 391 s of CPU, its means within 0.02% of the implicit route's (B 3438.9, C
+1694.2, G 903.4 Pa at 21760 vertices); on the 1312 mesh, which settles either way, the looser
+rule moves the means of B, C and G by at most 1.1e-6 of their value.
 
-A coarser level cannot work: at `Garment/Mesh scale = 2` (336 vertices, mean edge 2.7 cm)
-neither backend settles. The mass-spring backend stalls at ten times the tolerance (5.7e-4 N
-against 5.5e-5 N after 20 000 frames), its largest residual across the body's normal on a vertex
-over the shin (z = -0.633 m), a ring sliding to and fro over the shin's crest; the FE backend's
-Newton iterations stop at 1000 with 1.3 times the tolerance left (7.1e-5 N against 5.5e-5 N,
-line-search steps of 1/1024), the residual again across the normal, on the calf. Even settled
-that mesh could not read the bands: its warp edge (3 cm) is wider than a band (2 cm), which
-would hold one ring of vertices or none.
+A coarser level cannot read the bands: at `Garment/Mesh scale = 2` (336 vertices, mean edge
+2.7 cm) both backends settle ([stocking.md](stocking.md), "The coarse stocking": B, C and G
+3.4 %, 2.7 % and 3.0 % below the 1312 mesh), but its warp edge (3 cm) is wider than a band
+(2 cm), which holds one ring of vertices or none; the study leaves it out.
+MD
+echo
+echo "### Finite elements"
+if grep -q '^fem,' "$figures/stocking_convergence_regions_summary.csv"; then
+  tables stocking_convergence fem
+fi
+cat <<'MD'
 
-The FE backend on the case's own mesh (1312 vertices, the same command with `--backends fem`)
-reads B 3358.0, C 1687.1 and G 893.4 Pa, the mass-spring backend's to 1e-5 (B, C) and 4e-5
-(G). Its finer levels are slower: on the same shared machine the 1312 level took 325 Newton
-iterations in 102 s, the 2736 level had done 189 in 16 min; its study is not in this page.
+The FE backend on the case's own mesh (level 0: 51 Newton iterations in 4 contact rounds, 4.8 s
+of CPU) reads B 3357.97, C 1687.04 and G 893.36 Pa, the mass-spring backend's to 2e-5. Its
+finer levels are slow, and the time goes to the body, not to the linear solves: on the
+5120-vertex level half of the CPU time is the smooth contact surface's blend
+(`BlendedQuadricField::evaluate`, perf on the running study), 4% the faceted closest point,
+3% the membrane's assembly and 1-2% MUMPS. With the case's 60 Newton iterations a round, that
+level stops in its first round (19.6 s of CPU), the residual falling from 0.78 N to 0.019 N
+while jumping to several newtons between (the largest residuals of each window of 20
+iterations: 12.2, 9.4 and 5.5 N), the largest at the end 1.07 N along the body's normal on a
+vertex at the tube's top (z = -0.13 m, above G), 46 micrometres inside the body; with 300 a
+round, Newton reaches 1.8e-5 N by iteration 60 of the first round and stalls there for the
+other 240 (1.96e-5 N at the end, 5.5 times the stop rule's 3.5e-6 N; line-search steps of
+1/128 to 1/1024), the largest residual 1.7e-5 N, mostly along the body's normal, on a vertex at
+the ankle (z = -0.704 m, in B) 10 micrometres inside the body: the smooth surface's contact
+force that jumps under nanometre displacements ([backends.md](backends.md), "On a mesh body").
+The study stopped there after 530 s of CPU (the 1312 level 4.8 s), so the FE backend has no
+study of its own: on the case's own mesh it reads the mass-spring backend's bands, and the
+mass-spring study above is the stocking's.
 MD
 if [[ -s $figures/stocking_convergence_sqrt2_regions_summary.csv ]]; then
   cat <<'MD'
 
+### The edge divided by sqrt(2) (mass spring)
+
 With the edge lengths divided by sqrt(2) from one level to the next (`--ratio 1.41421356`,
-`scripts/stocking-convergence.sh --sqrt2`; 70 s of CPU): at 2736 vertices B, C and G lie 0.35%,
-0.24% and 0.53% below the estimates above, within 1% as predicted. Between 2736 and 5120
+`scripts/stocking-convergence.sh --sqrt2`; 70 s of CPU): at 2736 vertices B, C and G lie 0.33%,
+0.24% and 0.51% below the estimates above, within 1% as predicted. Between 2736 and 5120
 vertices B and C move by 0.1% and 0.01% against the trend (the band's rings of vertices and
 the share of their cells inside it change from mesh to mesh), so from these three levels alone
 the study observes no order for them:
@@ -157,8 +207,9 @@ inside the body, more than the quarter of a coarse edge the dressing allows (3.2
 the coarse settle stalls at twice the case's `Coarse settle tolerance = 3e-3` (1.2e-4 N
 against 6.3e-5 N); it only starts the fine settle, which keeps the case's tolerance, so it
 stops at 1e-2 here. The times are wall times on the shared two-core machine, dressing included
-(level 0: 81 s of CPU; level 1: 242 s until it stopped). `tightfit convergence` would dress
-each level twice (once to count its vertices), so the script runs the levels one by one.
+(level 0: 81 s of CPU; level 1: 242 s until it stopped). The script runs the levels one by
+one; `tightfit convergence` with `--levels 2 --ratio 1.41421356` and the same `--set`s would
+dress each level once too, and run that dressed garment on each backend.
 
 With two levels no order can be observed: a two-level Richardson value and GCI assume the
 linear triangles' order 2 and take Roache's safety factor 3 for two meshes, as
@@ -189,8 +240,10 @@ MD
     }' "${top}_level0_regions.csv" "${top}_case_regions.csv"
   cat <<'MD'
 
-On one mesh the dressing's start alone moves the bust's mean by 31% (40.0 against 57.9 Pa)
-and the shoulder blades' by 21%, the waist's by 1%: with friction the settled top keeps some
+(The 15 mm column was measured from the start the case typed before its frame came from the
+landmarks, 6 mm from today's; docs/dressing.md, "The results".) On one mesh the dressing's
+start alone moves the bust's mean by 21% (40.0 against 50.7 Pa) and the shoulder blades' by
+17%, the waist's by 4%: with friction the settled top keeps some
 of the path that brought it there, and its regions touch the body at a few vertices (7 at the
 waist, 26 to 32 on the bust). Before a mesh study of the top can say anything, its settled
 state must depend on the mesh alone: the finer level has to settle, and the dressing's start

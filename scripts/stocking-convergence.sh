@@ -1,34 +1,39 @@
 #!/usr/bin/env bash
 # The stocking's mesh-convergence study by region (docs/validation.md, "Mesh convergence on a
 # body"): cases/stocking_female.prm at three levels, the edge lengths halved from one to the
-# next (1312, 5120 and 21760 garment vertices), on the mass-spring backend, with the regions B,
-# C and G (or, with --top, the aaron top's at two levels). Keeps the study's region tables and level times in docs/figures/
-# (stocking_convergence_*.csv), draws docs/figures/stocking_convergence.png, and prints the
-# section of docs/validation.md that scripts/validation-report.sh renders from them.
+# next (1312, 5120 and 21760 garment vertices), on each backend in turn (the mass-spring backend
+# on its implicit route, the FE backend with room for the finer levels' Newton iterations), with
+# the regions B, C and G (or, with --top, the aaron top's at two levels). Keeps the study's region
+# tables and level times (wall and CPU) in docs/figures/ (stocking_convergence_*.csv), draws
+# docs/figures/stocking_convergence.png (the distance from the estimate, log-log) and
+# stocking_convergence_means.png (the means against the edge), and prints the section of
+# docs/validation.md that scripts/validation-report.sh renders from them.
 #
-# Usage: scripts/stocking-convergence.sh [--sqrt2 | --top] [--reuse]
+# Usage: scripts/stocking-convergence.sh [--sqrt2 | --top] [--backends "massspring fem"] [--reuse]
 #   --sqrt2  the edge lengths divided by sqrt(2) from level to level instead: 1312, 2736 and
-#            5120 vertices, kept as stocking_convergence_sqrt2_*.
+#            5120 vertices, mass spring on the case's RK4 at Solver/Relative tolerance 5e-4, kept
+#            as stocking_convergence_sqrt2_*.
 #   --top    the aaron top on the female (cases/top_female.prm) instead, at two levels, its own
 #            mesh and Mesh scale 1/sqrt(2), each a `tightfit run` dressed on a 15 mm coarse mesh
 #            (the convergence command dresses every level twice, once to count it); kept as
 #            top_convergence_level{0,1}_regions.csv and top_convergence_levels.csv; and the
 #            case as it stands on level 0's mesh, top_convergence_case_regions.csv.
-#   --reuse  draws from output/stocking_convergence[_sqrt2]/ and its study.log (--top:
+#   --backends  the backends of the main study to run (default both); the others' results in
+#            output/stocking_convergence/ are kept and drawn.
+#   --reuse  draws from output/stocking_convergence[_sqrt2]/ and its study logs (--top:
 #            output/top_convergence/level0/ and level1/), without running.
 #   TIGHTFIT=path/to/tightfit overrides the executable (default build/app/tightfit).
-# About 7 minutes of CPU (--sqrt2: about 1; --top: about 5); docs/validation.md lists each
-# level's time.
+# CPU time: the main study about 3 minutes on mass spring; docs/validation.md lists each
+# level's (--sqrt2: about 1 minute; --top: about 5).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tightfit=${TIGHTFIT:-build/app/tightfit}
 case_file=cases/stocking_female.prm levels=3 ratio=2 name=stocking_convergence reuse=false
-# Solver/Relative tolerance 5e-4: at the default 1e-4 the stocking's 2736-vertex level stalls at
-# three times it (docs/validation.md says what the looser rule changes).
-settings=(--set "Measurements/List=regions, compression class" --set "Solver/Relative tolerance=5e-4")
-plot_regions='B C G'
+settings=(--set "Measurements/List=regions, compression class")
+plot_regions='B C G' run_backends='massspring fem'
 while [[ $# -gt 0 ]]; do
   case $1 in
+    --backends) run_backends=$2; shift ;;
     --sqrt2) ratio=1.41421356 name=stocking_convergence_sqrt2 ;;
     --top) name=top_convergence ;;
     --reuse) reuse=true ;;
@@ -74,28 +79,65 @@ if [[ $name == top_convergence ]]; then
   scripts/stocking-convergence-section.sh "$figures"
   exit 0
 fi
-if [[ $reuse == false ]]; then
-  [[ -x $tightfit ]] || { echo "no $tightfit: build first (scripts/build.sh)" >&2; exit 2; }
-  rm -rf "$out"
-  mkdir -p "$out"
-  # Solver/Relative tolerance 5e-4: at the default 1e-4 the 2736-vertex level stalls at three
-  # times it (docs/validation.md says what the looser rule changes).
-  "$tightfit" convergence cases/stocking_female.prm --levels 3 --ratio "$ratio" \
-    --backends massspring --set "Measurements/List=regions, compression class" \
-    --set "Solver/Relative tolerance=5e-4" --output "$out" | tee "$out/study.log"
+[[ $reuse == true || -x $tightfit ]] || { echo "no $tightfit: build first (scripts/build.sh)" >&2; exit 2; }
+mkdir -p "$out" "$figures"
+# Each backend's own settings: the mass-spring backend on its implicit route (RK4's approach,
+# then Newton: docs/backends.md, "On a mesh body"; RK4's time step falls with the edge), the FE
+# backend with 300 Newton iterations a round (the case's 60 hold its own mesh's 44 at most; the
+# finer levels' first round takes more).
+declare -A backend_settings=(
+  [massspring]="Mass spring/Integrator=implicit"
+  [fem]="Finite elements/Maximum Newton iterations=300")
+if [[ $name == stocking_convergence_sqrt2 ]]; then
+  # Solver/Relative tolerance 5e-4: at the default 1e-4 the case's RK4 stalls at three times it
+  # on the 2736-vertex level (docs/validation.md says what the looser rule changes).
+  study_backends=massspring
+  backend_settings[massspring]="Solver/Relative tolerance=5e-4"
+else
+  study_backends='massspring fem'
 fi
-[[ -s $out/convergence_regions_summary.csv ]] || { echo "no $out/convergence_regions_summary.csv" >&2; exit 1; }
-mkdir -p "$figures"
-cp "$out/convergence_regions.csv" "$figures/${name}_regions.csv"
-cp "$out/convergence_regions_summary.csv" "$figures/${name}_regions_summary.csv"
-# Each level's wall time, from the study's progress lines ("massspring level 1 took 2.5 min").
-awk 'BEGIN {print "backend,level,seconds"}
-  / level [0-9]+ took / {
-    for (i = 1; i <= NF; ++i) if ($i == "took") { t = $(i + 1); u = $(i + 2) }
-    sub(/[;(].*/, "", u); s = t * (u ~ /^min/ ? 60 : u ~ /^h/ ? 3600 : 1)
-    print $1 "," $3 "," s }' "$out/study.log" >"$figures/${name}_times.csv"
+for backend in $study_backends; do
+  [[ $reuse == false && " $run_backends " == *" $backend "* ]] || continue
+  rm -rf "${out:?}/$backend" && mkdir -p "$out/$backend"
+  /usr/bin/time -f "%U s user %S s system %e s wall" -o "$out/$backend/time.txt" \
+    "$tightfit" convergence "$case_file" --levels "$levels" --ratio "$ratio" --backends "$backend" \
+    "${settings[@]}" --set "${backend_settings[$backend]}" --output "$out/$backend" |
+    tee "$out/$backend/study.log" || true
+done
+# The backends' tables side by side (each study writes its own, one header each).
+merge() {
+  local first=true file
+  for backend in $study_backends; do
+    file=$out/$backend/$1
+    [[ -s $file ]] || continue
+    if $first; then cat "$file"; first=false; else tail -n +2 "$file"; fi
+  done
+}
+merge convergence_regions.csv >"$figures/${name}_regions.csv"
+merge convergence_regions_summary.csv >"$figures/${name}_regions_summary.csv"
+[[ -s $figures/${name}_regions_summary.csv ]] || { echo "no study in $out" >&2; exit 1; }
+# Each level's wall and CPU time, from the studies' progress lines
+# ("massspring level 1 took 49 s (15 s of CPU; this backend so far ...").
+seconds() { awk -v t="$1" -v u="$2" 'BEGIN {sub(/[;(,].*/, "", u); print t * (u ~ /^min/ ? 60 : u ~ /^h/ ? 3600 : 1)}'; }
+{
+  echo "backend,level,seconds,cpu_seconds"
+  for backend in $study_backends; do
+    [[ -s $out/$backend/study.log ]] || continue
+    grep -E "^  $backend level [0-9]+ took " "$out/$backend/study.log" | while read -r b _ level _ t u c cu _; do
+      echo "$b,$level,$(seconds "$t" "$u"),$(seconds "${c#(}" "$cu")"
+    done
+  done
+} >"$figures/${name}_times.csv"
 if [[ -n $plot_regions ]]; then
+  for backend in $study_backends; do
+    grep -q "^$backend," "$out/$backend/convergence_regions_summary.csv" 2>/dev/null || continue
+    suffix=$([[ $backend == massspring ]] || echo "_$backend")
+    gnuplot -e "levels='$figures/${name}_regions.csv'; summary='$figures/${name}_regions_summary.csv'; \
+      out='$figures/$name$suffix.png'; regions='$plot_regions'; backend='$backend'" \
+      scripts/plots/region_convergence.gp
+  done
   gnuplot -e "levels='$figures/${name}_regions.csv'; summary='$figures/${name}_regions_summary.csv'; \
-    out='$figures/$name.png'; regions='$plot_regions'" scripts/plots/region_convergence.gp
+    out='$figures/${name}_means.png'; regions='$plot_regions'; backends='$study_backends'" \
+    scripts/plots/region_convergence_means.gp
 fi
 scripts/stocking-convergence-section.sh "$figures"
