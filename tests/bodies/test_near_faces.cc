@@ -110,8 +110,8 @@ TEST(NearFaces, WalkingPointsGetTheFreshQueryAndTheBruteForceDistance) {
 // same faces and the same quadrics in the same order give the same numbers; where faces tie,
 // the tree and the kept faces may take the other face of the edge (its location then names
 // that face), and the answers differ by round-off: measured gap 7.6e-17 m, unit normal and gap
-// gradient 1.1e-14, closest point (m) and dn/dx (relative) 1.0e-14, 6 of 1200 locations on the
-// other face (of 2000 whole answers). Bound 1e-12, a hundred times the largest.
+// gradient 1.1e-14, closest point (m) and dn/dx (relative) 1.0e-14; 6 of the 2000 whole
+// answers locate on the other face. Bound 1e-12, a hundred times the largest.
 TEST(NearFaces, SmoothSurfaceWarmAnswersAreTheTreesOnJumpsAndTies) {
   MeshBodyOptions options;
   options.contact_surface = MeshBodyOptions::ContactSurface::smooth;
