@@ -33,11 +33,11 @@ struct Term {
   int vertex;
   int turned;
   double w;
-  double d = 0.0;
+  double d;  // d_i(x), set with dd in the second pass
   double alpha, beta;
   Vec3 delta;
-  Vec3 dw;                 // grad w
-  Vec3 dd = Vec3::Zero();  // grad d = n + K (x - p)
+  Vec3 dw;  // grad w
+  Vec3 dd;  // grad d = n + K (x - p)
   // The screen against the flat normal (F, F', F'') and grad b (below): the weight
   // u = w F the vertex gives the facing normal.
   Smoothstep screen;
@@ -49,56 +49,72 @@ struct Term {
 void BlendedQuadricField::build(const std::vector<Vec3>& vertices_m,
                                 const std::vector<Triangle>& triangles,
                                 const std::vector<Vec3>& vertex_normals) {
-  p_ = vertices_m;
-  n_ = vertex_normals;
-  const int n = static_cast<int>(p_.size());
+  const int n = static_cast<int>(vertices_m.size());
   std::vector<std::vector<int>> around(n);
   for (const Triangle& t : triangles)
     for (int k = 0; k < 3; ++k) {
       around[t[k]].push_back(t[(k + 1) % 3]);
       around[t[k]].push_back(t[(k + 2) % 3]);
     }
-  support_m_.assign(n, 0.0);
-  reach_.assign(n, Reach{});
-  curvature_.assign(n, Mat3::Zero());
+  quadrics_.assign(n, Quadric{});
   for (int i = 0; i < n; ++i) {
+    const Vec3& p = vertices_m[i];
+    const Vec3& normal = vertex_normals[i];
     std::vector<int>& ring = around[i];
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     // The osculating quadric through the neighbours: n . e = -(a^2 k11 + 2 a b k12 + b^2 k22)/2
     // with (a, b) the edge's tangential coordinates; least squares over the ring.
-    const Vec3 t1 = any_normal_to(n_[i]), t2 = n_[i].cross(t1);
+    const Vec3 t1 = any_normal_to(normal), t2 = normal.cross(t1);
     Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
     Vec3 right = Vec3::Zero();
     double longest = 0.0;
     for (int j : ring) {
-      const Vec3 e = p_[j] - p_[i];
+      const Vec3 e = vertices_m[j] - p;
       longest = std::max(longest, e.norm());
       const double a = e.dot(t1), b = e.dot(t2);
       const Vec3 row(a * a, 2 * a * b, b * b);
       normal_matrix += row * row.transpose();
-      right += row * (-2.0 * e.dot(n_[i]));
+      right += row * (-2.0 * e.dot(normal));
     }
-    support_m_[i] = support_over_longest_edge * longest;
-    reach_[i] = {p_[i], (1.0 + 1e-9) * support_m_[i] * support_m_[i]};
+    Quadric& q = quadrics_[i];
+    q.centre_m = p;
+    q.normal = normal;
+    q.support_m = support_over_longest_edge * longest;
+    q.beyond_squared_m2 = (1.0 + 1e-9) * q.support_m * q.support_m;
+    q.over_support_squared = 1.0 / (q.support_m * q.support_m);
     // A ring too thin to fix all three (collinear neighbours) keeps the least-norm part: the
     // small ridge only matters in a direction no neighbour measures.
     normal_matrix += 1e-12 * (normal_matrix.trace() + 1e-300) * Mat3::Identity();
     const Vec3 k = normal_matrix.ldlt().solve(right);
-    curvature_[i] = k[0] * t1 * t1.transpose() +
-                    k[1] * (t1 * t2.transpose() + t2 * t1.transpose()) + k[2] * t2 * t2.transpose();
+    q.curvature_per_m = k[0] * t1 * t1.transpose() +
+                        k[1] * (t1 * t2.transpose() + t2 * t1.transpose()) +
+                        k[2] * t2 * t2.transpose();
+    q.shift_m = 0.0;
   }
   build_grid();
-  shift_m_.assign(n, 0.0);
+  // The sweeps need phi alone at each vertex, from the vertices whose support holds it: the
+  // same quadrics in the same ascending order as its grid cell's list (vertices_near with a
+  // zero radius), so the same value as evaluate() gives, about a third of the cell's list to
+  // scan.
+  std::vector<int> start(n + 1, 0), holding, near;
+  for (int j = 0; j < n; ++j) {
+    vertices_near(vertices_m[j], 0.0, near);
+    holding.insert(holding.end(), near.begin(), near.end());
+    start[j + 1] = static_cast<int>(holding.size());
+  }
   std::vector<double> misfit(n, 0.0);
   for (int sweep = 0; sweep < interpolation_sweeps; ++sweep) {
-    for (int j = 0; j < n; ++j) misfit[j] = evaluate(p_[j], n_[j], Mat3::Zero()).phi_m;
-    for (int j = 0; j < n; ++j) shift_m_[j] -= misfit[j];
+    for (int j = 0; j < n; ++j)
+      misfit[j] = evaluate_impl<false>(vertices_m[j], vertex_normals[j], Mat3::Zero(),
+                                       holding.data() + start[j], holding.data() + start[j + 1])
+                      .phi_m;
+    for (int j = 0; j < n; ++j) quadrics_[j].shift_m -= misfit[j];
   }
 }
 
 void BlendedQuadricField::build_grid() {
-  const int n = static_cast<int>(p_.size());
+  const int n = vertex_count();
   cell_start_.assign(1, 0);
   cell_vertices_.clear();
   cells_ = {0, 0, 0};
@@ -107,12 +123,13 @@ void BlendedQuadricField::build_grid() {
   // list to two to three times the vertices that add to a point in it (on the MakeHuman
   // female: 27 of 61 with cells half that size, for eight times the memory); a body whose
   // bounding box would need more than 2^22 cells of that size gets larger ones.
-  Vec3 low = p_[0], high = p_[0];
+  Vec3 low = position(0), high = position(0);
+  std::vector<double> supports(n);
   for (int i = 0; i < n; ++i) {
-    low = low.cwiseMin(p_[i] - Vec3::Constant(support_m_[i]));
-    high = high.cwiseMax(p_[i] + Vec3::Constant(support_m_[i]));
+    low = low.cwiseMin(position(i) - Vec3::Constant(support_m(i)));
+    high = high.cwiseMax(position(i) + Vec3::Constant(support_m(i)));
+    supports[i] = support_m(i);
   }
-  std::vector<double> supports = support_m_;
   std::nth_element(supports.begin(), supports.begin() + n / 2, supports.end());
   const Vec3 extent = high - low;
   cell_m_ = std::max(supports[n / 2], 1e-12);
@@ -124,22 +141,22 @@ void BlendedQuadricField::build_grid() {
   grid_origin_m_ = low;
   for (int k = 0; k < 3; ++k) cells_[k] = static_cast<int>(std::floor(extent[k] / cell_m_)) + 1;
   // Each vertex goes into every cell its ball meets (the cell's nearest point to p_i within
-  // s_i, with the same margin as reach_), counted first, then filled in vertex
+  // s_i, with the same margin as the scan's), counted first, then filled in vertex
   // order, so that a cell sums its quadrics in one fixed order.
   const auto for_each_cell_of = [&](int i, auto&& visit) {
-    const Vec3 relative = p_[i] - grid_origin_m_;
+    const Vec3 relative = position(i) - grid_origin_m_;
     std::array<int, 3> first, last;
     for (int k = 0; k < 3; ++k) {
-      first[k] = std::max(0, static_cast<int>(std::floor((relative[k] - support_m_[i]) / cell_m_)));
+      first[k] = std::max(0, static_cast<int>(std::floor((relative[k] - support_m(i)) / cell_m_)));
       last[k] = std::min(cells_[k] - 1,
-                         static_cast<int>(std::floor((relative[k] + support_m_[i]) / cell_m_)));
+                         static_cast<int>(std::floor((relative[k] + support_m(i)) / cell_m_)));
     }
     for (int c = first[2]; c <= last[2]; ++c)
       for (int b = first[1]; b <= last[1]; ++b)
         for (int a = first[0]; a <= last[0]; ++a) {
           const Vec3 corner = Vec3(a, b, c) * cell_m_;
           const Vec3 nearest = relative.cwiseMax(corner).cwiseMin(corner + Vec3::Constant(cell_m_));
-          if ((relative - nearest).squaredNorm() <= reach_[i].beyond_squared_m2)
+          if ((relative - nearest).squaredNorm() <= quadrics_[i].beyond_squared_m2)
             visit(a + cells_[0] * (b + cells_[1] * c));
         }
   };
@@ -175,35 +192,52 @@ void BlendedQuadricField::vertices_near(const Vec3& x, double radius_m,
           const int i = cell_vertices_[k];
           // Within s_i (1 + 1e-9) + radius of x, as the scan's test below (its margin, and a
           // nanometre for round-off).
-          const double reach = std::sqrt(reach_[i].beyond_squared_m2) + radius_m + 1e-9;
-          if ((x - reach_[i].centre_m).squaredNorm() <= reach * reach) vertices.push_back(i);
+          const double reach = std::sqrt(quadrics_[i].beyond_squared_m2) + radius_m + 1e-9;
+          if ((x - quadrics_[i].centre_m).squaredNorm() <= reach * reach) vertices.push_back(i);
         }
       }
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
 }
 
-BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m0,
-                                                         const Mat3& dm0_dx,
-                                                         const std::vector<int>* candidates) const {
-  thread_local std::vector<Term> terms_storage;
-  thread_local std::vector<Mat3> turned_storage;
-  std::vector<Term>& terms = terms_storage;
-  std::vector<Mat3>& turned = turned_storage;
-  terms.clear();
-  turned.clear();
+bool BlendedQuadricField::cell_list(const Vec3& x, const int*& listed,
+                                    const int*& listed_end) const {
   // The cell holding x; outside the grid no support reaches x.
   const Vec3 relative = (x - grid_origin_m_) / cell_m_;
   std::array<int, 3> at;
   for (int k = 0; k < 3; ++k) {
-    if (!(relative[k] >= 0.0 && relative[k] < cells_[k])) return Value{};
+    if (!(relative[k] >= 0.0 && relative[k] < cells_[k])) return false;
     at[k] = std::min(cells_[k] - 1, static_cast<int>(relative[k]));
   }
   const int cell = at[0] + cells_[0] * (at[1] + cells_[1] * at[2]);
-  const Reach* const reach = reach_.data();
-  const int* listed = cell_vertices_.data() + cell_start_[cell];
-  const int* listed_end = cell_vertices_.data() + cell_start_[cell + 1];
+  listed = cell_vertices_.data() + cell_start_[cell];
+  listed_end = cell_vertices_.data() + cell_start_[cell + 1];
+  return true;
+}
+
+BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Vec3& m0,
+                                                         const Mat3& dm0_dx,
+                                                         const std::vector<int>* candidates) const {
+  const int *listed = nullptr, *listed_end = nullptr;
+  if (!cell_list(x, listed, listed_end)) return Value{};
   if (candidates) listed = candidates->data(), listed_end = listed + candidates->size();
+  return evaluate_impl<true>(x, m0, dm0_dx, listed, listed_end);
+}
+
+template <bool derivatives>
+BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, const Vec3& m0,
+                                                              const Mat3& dm0_dx, const int* listed,
+                                                              const int* listed_end) const {
+  // The terms in a buffer that only grows (no allocation once warm), `count` of them in use.
+  thread_local std::vector<Term> terms_storage;
+  thread_local std::vector<Mat3> turned_storage;
+  const std::size_t listed_count = static_cast<std::size_t>(listed_end - listed);
+  if (terms_storage.size() < listed_count) terms_storage.resize(listed_count);
+  Term* const terms = terms_storage.data();
+  std::size_t count = 0;
+  std::vector<Mat3>& turned = turned_storage;
+  turned.clear();
+  const Quadric* const quadric = quadrics_.data();
   // The first pass: every vertex whose support holds x and whose normal lies within 160 degrees
   // of the flat normal m0, with its Wendland weight w and the weight u = w F it gives the
   // facing normal m (eq. F1 in the header), and grad u
@@ -216,12 +250,13 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   Mat3 dv = Mat3::Zero();  // its derivative, sum n_j (grad u_j)^T
   for (; listed != listed_end; ++listed) {
     const int i = *listed;
-    const Vec3 delta = x - reach[i].centre_m;
+    const Quadric& vertex = quadric[i];
+    const Vec3 delta = x - vertex.centre_m;
     // Most vertices of the cell's list lie beyond their support of x: their squared distance
     // tells so without the root and the division (a margin of 1e-9 keeps the test below exact).
-    if (delta.squaredNorm() > reach[i].beyond_squared_m2) continue;
-    const double s = support_m_[i], distance = delta.norm(), r = distance / s;
-    const Smoothstep F = smoothstep((n_[i].dot(m0) - screen_cosine_out) / screen_width);
+    if (delta.squaredNorm() > vertex.beyond_squared_m2) continue;
+    const double s = vertex.support_m, distance = delta.norm(), r = distance / s;
+    const Smoothstep F = smoothstep((vertex.normal.dot(m0) - screen_cosine_out) / screen_width);
     // A vertex the screen drops adds nothing: it faces more than 160 degrees from m0, and m
     // lies within a few degrees of m0 wherever the flat surface has an answer (both are the
     // surface's normal), beyond the 120 degrees of the facing factor (F3).
@@ -229,26 +264,26 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
     // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
     // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
     const double q = 1.0 - r;
-    Term t;
+    Term& t = terms[count++];
     t.vertex = i;
     t.turned = -1;
     t.delta = delta;
     t.w = q * q * q * q * (4 * r + 1);
-    const double over_s2 = 1.0 / (s * s);
-    t.alpha = -20.0 * over_s2 * q * q * q;
-    t.dw = t.alpha * delta;
-    t.beta = distance > 0 ? 60.0 * over_s2 * q * q / (distance * s) : 0.0;
     t.screen = F;
-    t.db = F.value < 1.0 ? Vec3(dm0_dx.transpose() * n_[i] / screen_width) : Vec3::Zero();
-    v += t.w * F.value * n_[i];
-    dv += n_[i] * (F.value * t.dw + t.w * F.slope * t.db).transpose();
-    terms.push_back(t);
+    v += t.w * F.value * vertex.normal;
+    if constexpr (derivatives) {
+      const double over_s2 = vertex.over_support_squared;
+      t.alpha = -20.0 * over_s2 * q * q * q;
+      t.dw = t.alpha * delta;
+      t.beta = distance > 0 ? 60.0 * over_s2 * q * q / (distance * s) : 0.0;
+      t.db = F.value < 1.0 ? Vec3(dm0_dx.transpose() * vertex.normal / screen_width) : Vec3::Zero();
+      dv += vertex.normal * (F.value * t.dw + t.w * F.slope * t.db).transpose();
+    }
   }
   const double length = v.norm();
   if (!(length > 0.0)) return Value{};
   // The facing normal m = v / |v| and dm/dx = (I - m m^T) dv / |v| (eq. F2).
   const Vec3 m = v / length;
-  const Mat3 dm_dx = (Mat3::Identity() - m * m.transpose()) * dv / length;
   // The second pass: each weight scaled by the facing factor S(a_i), a_i = 2 (n_i . m + 1/2)
   // (eq. F3), C2 in x as m is; the vertices turned beyond 120 degrees from m dropped.
   // The Hessian of n . m for a unit vector n (eq. F4), with rho = 1 / |v|:
@@ -257,30 +292,38 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
   //   H rho = 3 rho^5 (dv^T v)(dv^T v)^T - rho^3 (dv^T dv + Q(v)),
   // Q(c) = sum_j (c . n_j) H u_j; Q's three matrices Q_k = sum_j n_jk H u_j are summed once,
   // when some vertex is partly facing.
+  Mat3 dm_dx = Mat3::Zero();
   const double rho = 1.0 / length, rho3 = rho * rho * rho;
-  const Vec3 dv_v = dv.transpose() * v;
+  Vec3 dv_v = Vec3::Zero();
   std::array<Mat3, 3> Q{Mat3::Zero(), Mat3::Zero(), Mat3::Zero()};
   const auto Q_of = [&](const Vec3& c) -> Mat3 { return c[0] * Q[0] + c[1] * Q[1] + c[2] * Q[2]; };
   Mat3 H_rho = Mat3::Zero();
-  // Q and H rho from the first pass's weights, before the second pass scales them.
-  if (std::any_of(terms.begin(), terms.end(), [&](const Term& t) {
-        const double a = 2.0 * (n_[t.vertex].dot(m) + 0.5);
-        return a > 0.0 && a < 1.0;
-      })) {
-    for (const Term& j : terms) {
-      const Smoothstep& F = j.screen;
-      const Mat3 hu =
-          F.value * (j.alpha * Mat3::Identity() + j.beta * j.delta * j.delta.transpose()) +
-          F.slope * (j.dw * j.db.transpose() + j.db * j.dw.transpose()) +
-          j.w * F.curvature * j.db * j.db.transpose();
-      for (int c = 0; c < 3; ++c) Q[c] += n_[j.vertex][c] * hu;
+  if constexpr (derivatives) {
+    dm_dx = (Mat3::Identity() - m * m.transpose()) * dv / length;
+    dv_v = dv.transpose() * v;
+    // Q and H rho from the first pass's weights, before the second pass scales them.
+    if (std::any_of(terms, terms + count, [&](const Term& t) {
+          const double a = 2.0 * (quadric[t.vertex].normal.dot(m) + 0.5);
+          return a > 0.0 && a < 1.0;
+        })) {
+      for (std::size_t k = 0; k < count; ++k) {
+        const Term& j = terms[k];
+        const Smoothstep& F = j.screen;
+        const Mat3 hu =
+            F.value * (j.alpha * Mat3::Identity() + j.beta * j.delta * j.delta.transpose()) +
+            F.slope * (j.dw * j.db.transpose() + j.db * j.dw.transpose()) +
+            j.w * F.curvature * j.db * j.db.transpose();
+        for (int c = 0; c < 3; ++c) Q[c] += quadric[j.vertex].normal[c] * hu;
+      }
+      H_rho =
+          3 * rho3 * rho * rho * dv_v * dv_v.transpose() - rho3 * (dv.transpose() * dv + Q_of(v));
     }
-    H_rho = 3 * rho3 * rho * rho * dv_v * dv_v.transpose() - rho3 * (dv.transpose() * dv + Q_of(v));
   }
   std::size_t kept = 0;
-  for (std::size_t k = 0; k < terms.size(); ++k) {
-    Term t = terms[k];
-    const Vec3& n = n_[t.vertex];
+  for (std::size_t k = 0; k < count; ++k) {
+    Term& t = terms[k];
+    const Quadric& vertex = quadric[t.vertex];
+    const Vec3& n = vertex.normal;
     const double a = 2.0 * (n.dot(m) + 0.5);
     if (!(a > 0.0)) continue;
     if (a < 1.0) {
@@ -288,49 +331,56 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate(const Vec3& x, const Ve
       // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T
       // + w S' H a, H a = 2 H(n_i . m).
       const Smoothstep S = smoothstep(a);
-      const Vec3 da = 2.0 * dm_dx.transpose() * n;
-      const Vec3 g_n = dv.transpose() * n, g_rho = -rho3 * dv_v;
-      const Mat3 H_a = 2.0 * (rho * Q_of(n) + g_n * g_rho.transpose() + g_rho * g_n.transpose() +
-                              n.dot(v) * H_rho);
-      t.turned = static_cast<int>(turned.size());
-      turned.push_back(S.slope * (t.dw * da.transpose() + da * t.dw.transpose()) +
-                       t.w * S.curvature * da * da.transpose() + t.w * S.slope * H_a);
-      t.alpha *= S.value;
-      t.beta *= S.value;
-      t.dw = S.value * t.dw + t.w * S.slope * da;
+      if constexpr (derivatives) {
+        const Vec3 da = 2.0 * dm_dx.transpose() * n;
+        const Vec3 g_n = dv.transpose() * n, g_rho = -rho3 * dv_v;
+        const Mat3 H_a = 2.0 * (rho * Q_of(n) + g_n * g_rho.transpose() + g_rho * g_n.transpose() +
+                                n.dot(v) * H_rho);
+        t.turned = static_cast<int>(turned.size());
+        turned.push_back(S.slope * (t.dw * da.transpose() + da * t.dw.transpose()) +
+                         t.w * S.curvature * da * da.transpose() + t.w * S.slope * H_a);
+        t.alpha *= S.value;
+        t.beta *= S.value;
+        t.dw = S.value * t.dw + t.w * S.slope * da;
+      }
       t.w *= S.value;
     }
-    const Vec3 curved = curvature_[t.vertex] * t.delta;
-    t.d = n.dot(t.delta) + 0.5 * t.delta.dot(curved) + shift_m_[t.vertex];
+    const Vec3 curved = vertex.curvature_per_m * t.delta;
+    t.d = n.dot(t.delta) + 0.5 * t.delta.dot(curved) + vertex.shift_m;
     t.dd = n + curved;
-    terms[kept++] = t;
+    if (kept != k) terms[kept] = t;
+    ++kept;
   }
-  terms.resize(kept);
+  count = kept;
+  const Term* const terms_end = terms + count;
   Value f;
   f.facing_normal = m;
   double weighted = 0.0;
-  for (const Term& t : terms) {
-    f.weight_sum += t.w;
-    f.weight_gradient_per_m += t.dw;
-    weighted += t.w * t.d;
+  for (const Term* t = terms; t != terms_end; ++t) {
+    f.weight_sum += t->w;
+    if constexpr (derivatives) f.weight_gradient_per_m += t->dw;
+    weighted += t->w * t->d;
   }
   if (!(f.weight_sum > 0)) return f;
   const double W = f.weight_sum;
   f.phi_m = weighted / W;
+  if constexpr (!derivatives) return f;
   // grad phi = sum [w_i grad d_i + (d_i - phi) grad w_i] / W.
-  for (const Term& t : terms) f.gradient += (t.w * t.dd + (t.d - f.phi_m) * t.dw) / W;
+  for (const Term* t = terms; t != terms_end; ++t)
+    f.gradient += (t->w * t->dd + (t->d - f.phi_m) * t->dw) / W;
   // From W phi = S differentiated twice:
   // H phi = sum [(d_i - phi) H w_i + grad w_i (grad d_i - grad phi)^T
   //              + (grad d_i - grad phi) grad w_i^T + w_i K_i] / W,
   // summed in its six distinct entries (every term is symmetric), H w_i as Term says.
   double h[6] = {0, 0, 0, 0, 0, 0};  // (0,0) (1,1) (2,2) (0,1) (0,2) (1,2)
   double diagonal = 0.0;
-  for (const Term& t : terms) {
+  for (const Term* term = terms; term != terms_end; ++term) {
+    const Term& t = *term;
     const double off = t.d - f.phi_m, c = off * t.beta;
     const Vec3 e = t.dd - f.gradient;
     const Vec3& q = t.delta;
     const Vec3& g = t.dw;
-    const Mat3& K = curvature_[t.vertex];
+    const Mat3& K = quadric[t.vertex].curvature_per_m;
     diagonal += off * t.alpha;
     h[0] += c * q[0] * q[0] + 2 * g[0] * e[0] + t.w * K(0, 0);
     h[1] += c * q[1] * q[1] + 2 * g[1] * e[1] + t.w * K(1, 1);

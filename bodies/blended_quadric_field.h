@@ -86,26 +86,37 @@ class BlendedQuadricField {
   void vertices_near(const Vec3& x_m, double radius_m, std::vector<int>& vertices) const;
 
   // K_i, 1/m (symmetric, zero along n_i).
-  const Mat3& curvature(int vertex) const { return curvature_[vertex]; }
+  const Mat3& curvature(int vertex) const { return quadrics_[vertex].curvature_per_m; }
   // The other parts of vertex i's quadric and weight: p_i, n_i, c_i (m) and s_i (m).
-  int vertex_count() const { return static_cast<int>(p_.size()); }
-  const Vec3& position(int vertex) const { return p_[vertex]; }
-  const Vec3& normal(int vertex) const { return n_[vertex]; }
-  double shift_m(int vertex) const { return shift_m_[vertex]; }
-  double support_m(int vertex) const { return support_m_[vertex]; }
+  int vertex_count() const { return static_cast<int>(quadrics_.size()); }
+  const Vec3& position(int vertex) const { return quadrics_[vertex].centre_m; }
+  const Vec3& normal(int vertex) const { return quadrics_[vertex].normal; }
+  double shift_m(int vertex) const { return quadrics_[vertex].shift_m; }
+  double support_m(int vertex) const { return quadrics_[vertex].support_m; }
 
  private:
-  std::vector<Vec3> p_, n_;
-  std::vector<Mat3> curvature_;
-  std::vector<double> shift_m_;  // c_i
-  std::vector<double> support_m_;
-  // p_i and s_i^2 (1 + 1e-9), side by side for the scan of a cell's list: a vertex farther
-  // than the root from x has r >= 1 and adds nothing.
-  struct Reach {
+  // Everything a vertex's term reads, side by side (two cache lines), so that a query's scan
+  // of its 30 to 100 candidates loads each vertex once (docs/performance.md, "The body query
+  // alone"). beyond_squared_m2 = s_i^2 (1 + 1e-9): a vertex farther than its root from x has
+  // r >= 1 and adds nothing; over_support_squared = 1 / s_i^2.
+  struct Quadric {
     Vec3 centre_m;
     double beyond_squared_m2;
+    Vec3 normal;
+    double support_m;
+    Mat3 curvature_per_m;
+    double shift_m;  // c_i
+    double over_support_squared;
   };
-  std::vector<Reach> reach_;
+  std::vector<Quadric> quadrics_;
+  // evaluate(), with the derivatives (gradient, Hessian, the facing normal's derivative) only
+  // when `derivatives`; phi and W are the same to the last bit either way.
+  template <bool derivatives>
+  Value evaluate_impl(const Vec3& x_m, const Vec3& reference_normal,
+                      const Mat3& reference_normal_derivative, const int* listed,
+                      const int* listed_end) const;
+  // The candidates of the grid's cell holding x (an empty range outside the grid).
+  bool cell_list(const Vec3& x_m, const int*& listed, const int*& listed_end) const;
   // Lists, for each cell of a uniform grid, the vertices whose support ball reaches into it.
   void build_grid();
   Vec3 grid_origin_m_ = Vec3::Zero();
