@@ -27,7 +27,7 @@ struct PredictedSide {
   }
 };
 
-// Each array holds this rank's nodes only, node PatternMesh::owned_nodes[k] at position k (on
+// Each array holds this rank's nodes only, node ReferenceMesh::owned_nodes[k] at position k (on
 // one rank, every node at its own number): the rank that owns a node's DoFs assembles its contact.
 struct ContactNodes {
   std::vector<double> penalty_N_per_m;  // k_k w_k per node (w_k its positive nodal rest area)

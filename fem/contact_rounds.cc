@@ -11,13 +11,13 @@
 
 namespace tightfit {
 
-ContactRounds::ContactRounds(const PatternMesh& pattern, const Problem& problem,
+ContactRounds::ContactRounds(const ReferenceMesh& pattern, const Problem& problem,
                              const FemParameters& parameters)
     : pattern_(pattern), problem_(problem), parameters_(parameters) {
   std::vector<double> owned_area_m2, owned_edge_m;
-  for (const int node : pattern.owned_nodes) {
-    owned_area_m2.push_back(pattern.node_contact_area_m2[node]);
-    owned_edge_m.push_back(pattern.node_edge_m[node]);
+  for (const int node : pattern.owned_nodes()) {
+    owned_area_m2.push_back(pattern.node_contact_area_m2()[node]);
+    owned_edge_m.push_back(pattern.node_edge_m()[node]);
   }
   nodes_.penalty_N_per_m = nodal_penalties_N_per_m(
       owned_area_m2, parameters.penalty_factor * problem.law->stiffness_scale(), owned_edge_m);
@@ -33,7 +33,7 @@ void ContactRounds::start_from(const DofVector& x) {
   n_slipping_ = 0;
   std::vector<Vec3> nodes(pattern_.n_owned_nodes());
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k)
-    nodes[k] = pattern_.node_position(x, pattern_.owned_nodes[k]);
+    nodes[k] = pattern_.node_position(x, pattern_.owned_nodes()[k]);
   nodes_.friction.place(*problem_.body, nodes);
 }
 
@@ -49,7 +49,7 @@ void ContactRounds::commit_friction(const DofVector& x) {
   if (!nodes_.friction.active()) return;
   n_slipping_ = 0;
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
-    const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes[k]);
+    const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes()[k]);
     const FrictionResponse r = nodes_.friction.response(
         k, *problem_.body, p, nodes_.query(*problem_.body, k, p),
         std::max(0.0, nodes_.multiplier_N[k]), Vec3::Zero(), nodes_.near(k));
@@ -57,7 +57,7 @@ void ContactRounds::commit_friction(const DofVector& x) {
     friction_force_N_[k] = r.force_N;
     n_slipping_ += r.slipping;
   }
-  n_slipping_ = dealii::Utilities::MPI::sum(n_slipping_, pattern_.comm);
+  n_slipping_ = dealii::Utilities::MPI::sum(n_slipping_, pattern_.comm());
 }
 
 void ContactRounds::secant_predictor(const LoadStep& step, DofVector& x) {
@@ -73,14 +73,14 @@ void ContactRounds::secant_predictor(const LoadStep& step, DofVector& x) {
 
 void ContactRounds::contact_predictor(DofVector& x) const {
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
-    const int node = pattern_.owned_nodes[k];
+    const int node = pattern_.owned_nodes()[k];
     const Vec3 p = pattern_.node_position(x, node);
     const SurfacePoint s = problem_.body->query(p);
     // Nodes in contact at the last step (the multiplier predicted positive) go onto the
     // surface too: a penetration or gap left by the secant would cost kA g of residual.
     if (s.signed_distance_m >= 0.0 && nodes_.multiplier_N[k] <= 0.0) continue;
     Vec3 move = s.closest_point_m - p;
-    pattern_.node_constrained.remove_constrained(node, move);
+    pattern_.node_constrained().remove_constrained(node, move);
     pattern_.set_node_position(x, node, p + move);
   }
   pattern_.copy_seams(x);
@@ -91,7 +91,7 @@ double ContactRounds::update_multipliers(const DofVector& x, int* n_active) {
   int active = 0;
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
     const SurfacePoint s =
-        nodes_.query(*problem_.body, k, pattern_.node_position(x, pattern_.owned_nodes[k]));
+        nodes_.query(*problem_.body, k, pattern_.node_position(x, pattern_.owned_nodes()[k]));
     nodes_.multiplier_N[k] = contact_multiplier_N(nodes_.multiplier_N[k], nodes_.penalty_N_per_m[k],
                                                   s.signed_distance_m);
     if (nodes_.multiplier_N[k] > 0.0) {
@@ -100,8 +100,8 @@ double ContactRounds::update_multipliers(const DofVector& x, int* n_active) {
     }
   }
   // Every rank ends the rounds alike.
-  max_penetration_m_ = dealii::Utilities::MPI::max(max_penetration_m_, pattern_.comm);
-  *n_active = dealii::Utilities::MPI::sum(active, pattern_.comm);
+  max_penetration_m_ = dealii::Utilities::MPI::max(max_penetration_m_, pattern_.comm());
+  *n_active = dealii::Utilities::MPI::sum(active, pattern_.comm());
   return max_penetration_m_;
 }
 

@@ -12,7 +12,7 @@
 #include "core/load_step.h"
 #include "fem/contact_nodes.h"
 #include "fem/newton_solver.h"
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 
 #include <string>
 #include <vector>
@@ -23,10 +23,10 @@ class ContactRounds {
  public:
   // Penalty k_k = beta Y / h_k^2 (Pa/m) at node k, h_k its own edge length (contact_nodes.h);
   // multipliers start at 0.
-  ContactRounds(const PatternMesh& pattern, const Problem& problem,
+  ContactRounds(const ReferenceMesh& pattern, const Problem& problem,
                 const FemParameters& parameters);
 
-  // The contact state of this rank's nodes (PatternMesh::owned_nodes).
+  // The contact state of this rank's nodes (ReferenceMesh::owned_nodes).
   const ContactNodes& nodes() const { return nodes_; }
   // Largest penetration of a node in contact after the last round, over every rank, m.
   double max_penetration_m() const { return max_penetration_m_; }
@@ -62,7 +62,7 @@ class ContactRounds {
   // multipliers are the normal forces x was in equilibrium with) and its friction force.
   void commit_friction(const DofVector& x);
 
-  const PatternMesh& pattern_;
+  const ReferenceMesh& pattern_;
   const Problem& problem_;
   FemParameters parameters_;
   ContactNodes nodes_;

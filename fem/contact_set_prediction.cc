@@ -70,13 +70,13 @@ bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int k,
   return true;
 }
 
-int predict_contact_set(const PatternMesh& pattern, const RigidBody& body, const DofVector& x,
+int predict_contact_set(const ReferenceMesh& pattern, const RigidBody& body, const DofVector& x,
                         const DofVector& increment, ContactNodes& nodes) {
   std::vector<PredictedSide>& predicted = nodes.predicted;
   predicted.resize(pattern.n_owned_nodes());
   int n_changed = 0;
   for (int k = 0; k < pattern.n_owned_nodes(); ++k) {
-    const int node = pattern.owned_nodes[k];
+    const int node = pattern.owned_nodes()[k];
     const Vec3 p = pattern.node_position(x, node);
     // The node's displacement: node_position reads its DoF values, here the increment's.
     const Vec3 dx = pattern.node_position(increment, node);
@@ -93,7 +93,7 @@ int predict_contact_set(const PatternMesh& pattern, const RigidBody& body, const
     predicted[k] = side;
   }
   // Every rank goes on to solve again, or stops, alike.
-  return dealii::Utilities::MPI::sum(n_changed, pattern.comm);
+  return dealii::Utilities::MPI::sum(n_changed, pattern.comm());
 }
 
 }  // namespace tightfit

@@ -30,11 +30,11 @@
 
 #include "bodies/rigid_body.h"
 #include "fem/contact_nodes.h"
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 
 namespace tightfit {
 
-// The contact and friction force on owned node k (pattern.owned_nodes[k]) at p on the sides
+// The contact and friction force on owned node k (pattern.owned_nodes()[k]) at p on the sides
 // nodes.predicted holds for it (its own at p where that is empty or 0), and -d(force)/dx when
 // `with_tangent`: exact, or with the contact's part symmetrised when `symmetric_contact`
 // (contact/nodal_contact.h). Returns false where the node feels neither.
@@ -45,7 +45,7 @@ bool model_node_contact(const RigidBody& body, const ContactNodes& nodes, int k,
 // Sets nodes.predicted of this rank's nodes for the Newton step `increment` from x (above).
 // Returns how many nodes' contact side or friction branch, on every rank, differ from those
 // nodes.predicted held before (0: the step was solved on the sides it predicts); collective.
-int predict_contact_set(const PatternMesh& pattern, const RigidBody& body, const DofVector& x,
+int predict_contact_set(const ReferenceMesh& pattern, const RigidBody& body, const DofVector& x,
                         const DofVector& increment, ContactNodes& nodes);
 
 }  // namespace tightfit

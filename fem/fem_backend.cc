@@ -1,4 +1,4 @@
-// The finite-element backend's facade: it wires the pattern mesh (pattern_mesh.h), the
+// The finite-element backend's facade: it wires the reference mesh (reference_mesh.h), the
 // constraints (fem_constraints.h), the assembly (membrane_assembly.h), Newton's method
 // (newton_solver.h), the augmented-Lagrangian contact rounds (contact_rounds.h) and the
 // post-processing (fem_state.h) behind the light fem_backend.h.
@@ -14,8 +14,8 @@
 #include "fem/membrane_assembly.h"
 #include "fem/mesh_part.h"
 #include "fem/newton_solver.h"
-#include "fem/pattern_mesh.h"
 #include "fem/petsc_linear_solver.h"
+#include "fem/reference_mesh.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -90,7 +90,7 @@ class FemBackend::Implementation {
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
         assembly_(pattern_, problem_, uses_cg(parameters.linear_solver), comm_),
         newton_(pattern_, parameters, problem.law->stiffness_scale(),
-                tension_scale_N(pattern_.mean_rest_edge_m, pattern_.rest_area_m2,
+                tension_scale_N(pattern_.mean_rest_edge_m(), pattern_.rest_area_m2(),
                                 problem.law->stiffness_scale()),
                 problem.body, comm_),
         contact_(pattern_, problem_, parameters),
@@ -126,7 +126,7 @@ class FemBackend::Implementation {
   Problem problem_;
   FemParameters parameters_;
   MPI_Comm comm_ = MPI_COMM_WORLD;
-  PatternMesh pattern_;
+  ReferenceMesh pattern_;
   MembraneAssembly assembly_;
   NewtonSolver newton_;
   ContactRounds contact_;
@@ -230,7 +230,7 @@ void FemBackend::linearise(const std::vector<Vec3>& node_positions_m, Eigen::Vec
 namespace {
 
 // The DoF vector of every node at its position (serial: every copy of a seam node alike).
-DofVector dofs_at_nodes(const PatternMesh& pattern, const std::vector<Vec3>& node_positions_m) {
+DofVector dofs_at_nodes(const ReferenceMesh& pattern, const std::vector<Vec3>& node_positions_m) {
   if (static_cast<int>(node_positions_m.size()) != pattern.n_nodes() ||
       pattern.n_owned_nodes() != pattern.n_nodes())
     throw std::invalid_argument(
@@ -255,7 +255,7 @@ double FemBackend::potential_defect_N(const std::vector<Vec3>& node_positions_m)
 
 std::vector<Vec3> FemBackend::node_positions(const std::vector<Vec3>& vertex_positions_m) const {
   std::vector<Vec3> nodes = vertex_positions_m;
-  for (const auto& ends : impl_->pattern_.edge_ends)
+  for (const auto& ends : impl_->pattern_.edge_ends())
     nodes.push_back(0.5 * (vertex_positions_m[ends[0]] + vertex_positions_m[ends[1]]));
   return nodes;
 }

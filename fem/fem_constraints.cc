@@ -40,7 +40,7 @@ void constrain_directions(const DofTriple& dofs, const Directions& directions,
 
 }  // namespace
 
-void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
+void build_constraints_and_system(const ReferenceMesh& pattern, const Problem& problem,
                                   const std::vector<Vec3>& positions_m, MPI_Comm comm,
                                   NewtonSystem& system) {
   dealii::AffineConstraints<double>& constraints = system.constraints;
@@ -48,7 +48,7 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
   // (a node's copies are relevant together, so a seam or a direction never reaches a DoF the
   // rank does not keep). Assembly, the sparsity pattern and distributing an increment read no
   // others.
-  const dealii::IndexSet& relevant = pattern.relevant_dofs;
+  const dealii::IndexSet& relevant = pattern.relevant_dofs();
   constraints.clear();
   constraints.reinit(relevant);
   // Seams: every copy of a node (a welded vertex, or the midpoint of a seam edge) follows
@@ -63,16 +63,17 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
   }
   // Constrained nodes keep their coordinates along their constrained directions.
   for (int node = 0; node < pattern.n_local_nodes(); ++node)
-    if (pattern.node_constrained.constrained(node))
-      constrain_directions(pattern.carrier(node), pattern.node_constrained.directions(node),
+    if (pattern.node_constrained().constrained(node))
+      constrain_directions(pattern.carrier(node), pattern.node_constrained().directions(node),
                            constraints);
   // The pins are chosen among every vertex alike on every rank: from the whole garment's
   // positions and rank 0's constraints (held only while they are chosen).
   // The turn about the held direction, when every vertex is held along it, is held by the
   // bordered Newton system instead (held_turn_system.h).
-  const HeldTurn held_turn(pattern.constraints, pattern.n_vertices());
+  const HeldTurn held_turn(pattern.constraints(), pattern.n_vertices());
   const RigidMotionPin pin = rigid_motion_pin(
-      *problem.body, positions_m, ConstrainedDirections(pattern.constraints, pattern.n_vertices()),
+      *problem.body, positions_m,
+      ConstrainedDirections(pattern.constraints(), pattern.n_vertices()),
       problem.friction_coefficient > 0.0, held_turn.active() ? &held_turn.axis() : nullptr);
   for (const RigidMotionPin::Pin& p : pin.pins) {
     const int node = pattern.find_node(p.vertex);
@@ -90,13 +91,13 @@ void build_constraints_and_system(const PatternMesh& pattern, const Problem& pro
       pattern.get_cell_dofs(cell, dofs);
       constraints.add_entries_local_to_global(dofs, sparsity, false);
     }
-    dealii::SparsityTools::distribute_sparsity_pattern(sparsity, pattern.owned_dofs, comm,
+    dealii::SparsityTools::distribute_sparsity_pattern(sparsity, pattern.owned_dofs(), comm,
                                                        relevant);
-    system.tangent.reinit(pattern.owned_dofs, pattern.owned_dofs, sparsity, comm);
+    system.tangent.reinit(pattern.owned_dofs(), pattern.owned_dofs(), sparsity, comm);
   }
   release_freed_memory();
-  system.rhs.reinit(pattern.owned_dofs, comm);
-  system.increment.reinit(pattern.owned_dofs, comm);
+  system.rhs.reinit(pattern.owned_dofs(), comm);
+  system.increment.reinit(pattern.owned_dofs(), comm);
 }
 
 }  // namespace tightfit

@@ -6,13 +6,13 @@
 #pragma once
 
 #include "fem/newton_system.h"
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 
 namespace tightfit {
 
 // Rebuilds system.constraints for the garment with its welded vertices at `positions_m` (the
 // pin is chosen there), then the tangent's pattern and the vectors on the rank's own DoFs.
-void build_constraints_and_system(const PatternMesh& pattern, const Problem& problem,
+void build_constraints_and_system(const ReferenceMesh& pattern, const Problem& problem,
                                   const std::vector<Vec3>& positions_m, MPI_Comm comm,
                                   NewtonSystem& system);
 

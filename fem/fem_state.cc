@@ -10,7 +10,7 @@ namespace tightfit {
 
 namespace {
 
-void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& assembly,
+void fill_from_multipliers(const ReferenceMesh& pattern, const MembraneAssembly& assembly,
                            const RigidBody& body, const DofVector& x,
                            const std::vector<double>& multiplier_N,
                            const std::vector<Vec3>& friction_force_N, FemSurfaceOutput& out) {
@@ -22,8 +22,8 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
   state.gap_m.assign(n, 0.0);
   // Each vertex's barycentric area: each rank its own cells' thirds, summed over the ranks.
   std::vector<double> area =
-      vertex_areas(pattern.cell_corners, state.positions_m, n, VertexAreaDefinition::barycentric);
-  MPI_Allreduce(MPI_IN_PLACE, area.data(), n, MPI_DOUBLE, MPI_SUM, pattern.comm);
+      vertex_areas(pattern.cell_corners(), state.positions_m, n, VertexAreaDefinition::barycentric);
+  MPI_Allreduce(MPI_IN_PLACE, area.data(), n, MPI_DOUBLE, MPI_SUM, pattern.comm());
   out.contact_traction_Pa.assign(n, 0.0);
   for (int w = 0; w < n; ++w) {
     const SurfacePoint s = body.query(state.positions_m[w]);
@@ -59,20 +59,20 @@ void fill_from_multipliers(const PatternMesh& pattern, const MembraneAssembly& a
 // With friction the nodal tangential forces are consistent loads too: each Cartesian component
 // is recovered the same way, and each vertex gets the recovered friction traction's part
 // tangent to the body there times A_v in its contact force (the extractor's friction traction).
-void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& body,
+void fill_from_recovered_traction(const ReferenceMesh& pattern, const RigidBody& body,
                                   const DofVector& x, const std::vector<double>& multiplier_N,
                                   const std::vector<Vec3>& gravity_load_N,
                                   const std::vector<Vec3>& friction_force_N,
                                   FemSurfaceOutput& out) {
-  const SimulationMesh& mesh = *pattern.whole_mesh;  // degree 2: on every rank
+  const SimulationMesh& mesh = *pattern.whole_mesh();  // degree 2: on every rank
   const int n = mesh.n_vertices;
   SurfaceQuadrature quadrature;
-  quadrature.shape_values = pattern.hat_values;
-  for (const auto& v : pattern.cell_vertices)
+  quadrature.shape_values = pattern.hat_values();
+  for (const auto& v : pattern.cell_vertices())
     quadrature.cell_nodes.emplace_back(v.begin(), v.end());
   const unsigned int n_local = pattern.n_local_dofs();
   const unsigned int n_element_nodes = pattern.n_element_nodes();
-  const std::size_t n_points = pattern.quadrature.size();
+  const std::size_t n_points = pattern.quadrature().size();
   // Each rank its own cells' points, summed over the ranks: every rank recovers all of it.
   std::vector<double> point_area_m2(pattern.n_all_cells() * n_points, 0.0);
   for (int cell = 0; cell < pattern.n_cells(); ++cell) {
@@ -80,22 +80,23 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
       // dA = |x,1 x x,2| dA_grain, x,i the columns of F = dx/dX_grain.
       Mat32 F = Mat32::Zero();
       for (unsigned int i = 0; i < n_local; ++i)
-        F.row(pattern.local_component[i]) +=
-            x(pattern.cell_dofs[cell][i]) *
-            pattern.cell_grad_grain[cell][q * n_element_nodes + pattern.local_node[i]].transpose();
+        F.row(pattern.local_component()[i]) +=
+            x(pattern.cell_dofs()[cell][i]) *
+            pattern.cell_grad_grain()[cell][q * n_element_nodes + pattern.local_node()[i]]
+                .transpose();
       const double grain_area_m2 =
-          pattern.cell_JxW_m2[cell][q] * pattern.cell_grain_area_ratio[cell];
-      point_area_m2[pattern.cell_index[cell] * n_points + q] =
+          pattern.cell_JxW_m2()[cell][q] * pattern.cell_grain_area_ratio()[cell];
+      point_area_m2[pattern.cell_index()[cell] * n_points + q] =
           Vec3(F.col(0)).cross(Vec3(F.col(1))).norm() * grain_area_m2;
     }
   }
   MPI_Allreduce(MPI_IN_PLACE, point_area_m2.data(), static_cast<int>(point_area_m2.size()),
-                MPI_DOUBLE, MPI_SUM, pattern.comm);
+                MPI_DOUBLE, MPI_SUM, pattern.comm());
   quadrature.point_area_m2.resize(pattern.n_all_cells());
   for (int cell = 0; cell < pattern.n_all_cells(); ++cell)
     quadrature.point_area_m2[cell].assign(point_area_m2.begin() + cell * n_points,
                                           point_area_m2.begin() + (cell + 1) * n_points);
-  const auto& edge_ends = pattern.edge_ends;
+  const auto& edge_ends = pattern.edge_ends();
   // The loads against the vertex hats of nodal normal loads (a midpoint's to its edge's ends).
   const auto hat_loads = [&](const std::vector<double>& node_load_N) {
     std::vector<double> hat_load_N(n, 0.0);
@@ -113,7 +114,7 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
   if (!gravity_load_N.empty()) {
     // The weight's normal part at each owned node, then at every node.
     std::vector<double> owned_weight_N;
-    for (const int node : pattern.owned_nodes)
+    for (const int node : pattern.owned_nodes())
       owned_weight_N.push_back(gravity_load_N[pattern.global_node(node)].dot(
           body.query(pattern.node_position(x, node)).outward_normal));
     const std::vector<double> weight_N = pattern.gather_nodes(owned_weight_N);
@@ -168,14 +169,14 @@ void fill_from_recovered_traction(const PatternMesh& pattern, const RigidBody& b
 
 }  // namespace
 
-FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
+FemSurfaceOutput surface_output(const ReferenceMesh& pattern, const MembraneAssembly& assembly,
                                 const RigidBody& body, const DofVector& x,
                                 const std::vector<double>& multiplier_N,
                                 const std::vector<Vec3>& gravity_load_N,
                                 const std::vector<Vec3>& friction_force_N) {
   FemSurfaceOutput out;
   out.state.positions_m = pattern.vertex_positions(x);
-  if (pattern.element_degree == 1)
+  if (pattern.element_degree() == 1)
     fill_from_multipliers(pattern, assembly, body, x, multiplier_N, friction_force_N, out);
   else
     fill_from_recovered_traction(pattern, body, x, multiplier_N, gravity_load_N, friction_force_N,
@@ -183,10 +184,10 @@ FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssemb
   return out;
 }
 
-OwnedSurfaceOutput::OwnedSurfaceOutput(const PatternMesh& pattern, const FemSurfaceOutput& whole)
+OwnedSurfaceOutput::OwnedSurfaceOutput(const ReferenceMesh& pattern, const FemSurfaceOutput& whole)
     : has_step_(true) {
   const SurfaceState& state = whole.state;
-  for (const int node : pattern.owned_nodes) {
+  for (const int node : pattern.owned_nodes()) {
     const int w = pattern.global_node(node);
     const bool vertex = w < pattern.n_vertices();
     positions_m_.push_back(vertex ? state.positions_m[w] : Vec3::Zero());
@@ -202,7 +203,7 @@ namespace {
 
 // Every vertex's values from the owned nodes' (collective): the vertices come first.
 template <typename T>
-std::vector<T> every_vertex(const PatternMesh& pattern, const std::vector<T>& owned_values) {
+std::vector<T> every_vertex(const ReferenceMesh& pattern, const std::vector<T>& owned_values) {
   std::vector<T> values = pattern.gather_nodes(owned_values);
   values.resize(pattern.n_vertices());
   return values;
@@ -210,7 +211,7 @@ std::vector<T> every_vertex(const PatternMesh& pattern, const std::vector<T>& ow
 
 }  // namespace
 
-SurfaceState OwnedSurfaceOutput::state(const PatternMesh& pattern) const {
+SurfaceState OwnedSurfaceOutput::state(const ReferenceMesh& pattern) const {
   SurfaceState state;
   if (!has_step_) return state;
   state.positions_m = every_vertex(pattern, positions_m_);
@@ -223,7 +224,7 @@ SurfaceState OwnedSurfaceOutput::state(const PatternMesh& pattern) const {
   return state;
 }
 
-std::vector<double> OwnedSurfaceOutput::contact_traction_Pa(const PatternMesh& pattern) const {
+std::vector<double> OwnedSurfaceOutput::contact_traction_Pa(const ReferenceMesh& pattern) const {
   return has_step_ ? every_vertex(pattern, contact_traction_Pa_) : std::vector<double>{};
 }
 

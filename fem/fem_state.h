@@ -10,7 +10,7 @@
 
 #include "core/surface_state.h"
 #include "fem/membrane_assembly.h"
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 
 #include <vector>
 
@@ -27,24 +27,24 @@ struct FemSurfaceOutput {
 // it joins the contact force, where the extractor reads it as friction traction (degree 2: the
 // traction recovered from the nodal forces, as for the normal one).
 // `x` is this rank's part of the positions, `multiplier_N` and `friction_force_N` every node's
-// (PatternMesh::gather_nodes): every rank builds the whole output.
-FemSurfaceOutput surface_output(const PatternMesh& pattern, const MembraneAssembly& assembly,
+// (ReferenceMesh::gather_nodes): every rank builds the whole output.
+FemSurfaceOutput surface_output(const ReferenceMesh& pattern, const MembraneAssembly& assembly,
                                 const RigidBody& body, const DofVector& x,
                                 const std::vector<double>& multiplier_N,
                                 const std::vector<Vec3>& gravity_load_N,
                                 const std::vector<Vec3>& friction_force_N);
 
 // The output as a rank keeps it between steps: the values of its owned nodes only (in the order
-// of PatternMesh::owned_nodes; an edge midpoint's are zero), so that no rank holds every
+// of ReferenceMesh::owned_nodes; an edge midpoint's are zero), so that no rank holds every
 // vertex's state while the next step is solved. state() and contact_traction_Pa() give every
 // vertex's again, on every rank (collective; empty before the first step), exactly: each
 // vertex's values come from the one rank that owns it.
 class OwnedSurfaceOutput {
  public:
   OwnedSurfaceOutput() = default;
-  OwnedSurfaceOutput(const PatternMesh& pattern, const FemSurfaceOutput& whole);
-  SurfaceState state(const PatternMesh& pattern) const;
-  std::vector<double> contact_traction_Pa(const PatternMesh& pattern) const;
+  OwnedSurfaceOutput(const ReferenceMesh& pattern, const FemSurfaceOutput& whole);
+  SurfaceState state(const ReferenceMesh& pattern) const;
+  std::vector<double> contact_traction_Pa(const ReferenceMesh& pattern) const;
 
  private:
   bool has_step_ = false;

@@ -9,29 +9,31 @@
 
 namespace tightfit {
 
-HeldTurnSystem::HeldTurnSystem(const PatternMesh& pattern, bool symmetric)
-    : pattern_(pattern), symmetric_(symmetric), turn_(pattern.constraints, pattern.n_vertices()) {}
+HeldTurnSystem::HeldTurnSystem(const ReferenceMesh& pattern, bool symmetric)
+    : pattern_(pattern),
+      symmetric_(symmetric),
+      turn_(pattern.constraints(), pattern.n_vertices()) {}
 
 void HeldTurnSystem::project_residual(const DofVector& x, bool with_tangent, NewtonSystem& system) {
   if (!active()) return;
   const dealii::AffineConstraints<double>& constraints = system.constraints;
   // The centre of the nodes' rest areas, over every rank.
   double sums[4] = {0.0, 0.0, 0.0, 0.0};
-  for (const int node : pattern_.owned_nodes) {
-    const double w = pattern_.node_contact_area_m2[node];
+  for (const int node : pattern_.owned_nodes()) {
+    const double w = pattern_.node_contact_area_m2()[node];
     const Vec3 p = pattern_.node_position(x, node);
     for (int c = 0; c < 3; ++c) sums[c] += w * p[c];
     sums[3] += w;
   }
-  dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4), pattern_.comm,
+  dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4), pattern_.comm(),
                               dealii::ArrayView<double>(sums, 4));
   if (!(sums[3] > 0.0)) return;
   const Vec3 centre = Vec3(sums[0], sums[1], sums[2]) / sums[3];
 
   if (border_.size() != system.rhs.size()) {
-    border_.reinit(pattern_.owned_dofs, pattern_.comm);
-    field_.reinit(pattern_.owned_dofs, pattern_.comm);
-    solved_.reinit(pattern_.owned_dofs, pattern_.comm);
+    border_.reinit(pattern_.owned_dofs(), pattern_.comm());
+    field_.reinit(pattern_.owned_dofs(), pattern_.comm());
+    solved_.reinit(pattern_.owned_dofs(), pattern_.comm());
   }
   border_ = 0.0;
   field_ = 0.0;
@@ -40,9 +42,9 @@ void HeldTurnSystem::project_residual(const DofVector& x, bool with_tangent, New
   // and t normal to it, t itself satisfies the constraints: t = C (t on the free DoFs).
   std::vector<dealii::types::global_dof_index> indices;
   std::vector<double> values;
-  for (const int node : pattern_.owned_nodes) {
+  for (const int node : pattern_.owned_nodes()) {
     const Vec3 t = turn_.axis().cross(pattern_.node_position(x, node) - centre);
-    const Vec3 f = pattern_.node_contact_area_m2[node] * t;
+    const Vec3 f = pattern_.node_contact_area_m2()[node] * t;
     const DofTriple& dofs = pattern_.carrier(node);
     for (int c = 0; c < 3; ++c) {
       if (!constraints.is_constrained(dofs[c])) {
@@ -72,7 +74,7 @@ void HeldTurnSystem::project_residual(const DofVector& x, bool with_tangent, New
   Mat3 cross;
   const Vec3& a = turn_.axis();
   cross << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  for (const int node : pattern_.owned_nodes) {
+  for (const int node : pattern_.owned_nodes()) {
     const DofTriple& dofs = pattern_.carrier(node);
     std::array<std::vector<std::pair<dealii::types::global_dof_index, double>>, 3> free;
     for (int c = 0; c < 3; ++c) {
@@ -82,7 +84,7 @@ void HeldTurnSystem::project_residual(const DofVector& x, bool with_tangent, New
         for (const auto& [j, weight] : *constraints.get_constraint_entries(dofs[c]))
           free[c].emplace_back(j, weight);
     }
-    const double scale = -lambda * pattern_.node_contact_area_m2[node];
+    const double scale = -lambda * pattern_.node_contact_area_m2()[node];
     for (int c = 0; c < 3; ++c)
       for (int d = 0; d < 3; ++d) {
         if (cross(c, d) == 0.0) continue;

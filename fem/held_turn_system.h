@@ -23,7 +23,7 @@
 
 #include "core/held_turn.h"
 #include "fem/newton_system.h"
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 
 #include <functional>
 
@@ -32,7 +32,7 @@ namespace tightfit {
 class HeldTurnSystem {
  public:
   // `symmetric`: the tangent must stay symmetric (CG), so the reaction's own stiffness is left out.
-  HeldTurnSystem(const PatternMesh& pattern, bool symmetric);
+  HeldTurnSystem(const ReferenceMesh& pattern, bool symmetric);
 
   bool active() const { return turn_.active(); }
   const HeldTurn& turn() const { return turn_; }
@@ -48,7 +48,7 @@ class HeldTurnSystem {
   double mean_turn(const dealii::PETScWrappers::MPI::Vector& increment) const;
 
  private:
-  const PatternMesh& pattern_;
+  const ReferenceMesh& pattern_;
   bool symmetric_;
   HeldTurn turn_;
   dealii::PETScWrappers::MPI::Vector border_;  // b = C^T M t, m^3 (area times length)

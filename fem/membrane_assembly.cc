@@ -12,7 +12,7 @@
 
 namespace tightfit {
 
-MembraneAssembly::MembraneAssembly(const PatternMesh& pattern, const Problem& problem,
+MembraneAssembly::MembraneAssembly(const ReferenceMesh& pattern, const Problem& problem,
                                    bool symmetric_tangent, MPI_Comm comm)
     : pattern_(pattern), problem_(problem), symmetric_tangent_(symmetric_tangent), comm_(comm) {}
 
@@ -27,19 +27,19 @@ void MembraneAssembly::cell_kernel(unsigned int cell, const DofVector& x, Eigen:
                                    Eigen::MatrixXd* hessian) const {
   const unsigned int n_local = pattern_.n_local_dofs();
   const unsigned int n_element_nodes = pattern_.n_element_nodes();
-  const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs[cell];
+  const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs()[cell];
   gradient.setZero(n_local);
   if (hessian) hessian->setZero(n_local, n_local);
   std::vector<Vec2> grad_grain(n_element_nodes);
-  for (unsigned int q = 0; q < pattern_.cell_JxW_m2[cell].size(); ++q) {
-    std::copy_n(pattern_.cell_grad_grain[cell].begin() + q * n_element_nodes, n_element_nodes,
+  for (unsigned int q = 0; q < pattern_.cell_JxW_m2()[cell].size(); ++q) {
+    std::copy_n(pattern_.cell_grad_grain()[cell].begin() + q * n_element_nodes, n_element_nodes,
                 grad_grain.begin());
     // F = dx/dX_grain = sum_a x_a grad_N_a^T (docs/model.md: the membrane's 3x2 gradient).
     Mat32 F = Mat32::Zero();
     for (unsigned int i = 0; i < n_local; ++i)
-      F.row(pattern_.local_component[i]) +=
-          x(dofs[i]) * grad_grain[pattern_.local_node[i]].transpose();
-    add_membrane_point(*problem_.law, grad_grain, F, pattern_.cell_JxW_m2[cell][q], gradient,
+      F.row(pattern_.local_component()[i]) +=
+          x(dofs[i]) * grad_grain[pattern_.local_node()[i]].transpose();
+    add_membrane_point(*problem_.law, grad_grain, F, pattern_.cell_JxW_m2()[cell][q], gradient,
                        hessian);
   }
 }
@@ -76,8 +76,9 @@ void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = pattern_.node_major(i);
       // The weight is constant: a load on the right-hand side, nothing in the tangent.
-      cell_rhs[i] = -gradient[a] + pattern_.cell_node_rest_area_m2[cell][pattern_.local_node[i]] *
-                                       weight[pattern_.local_component[i]];
+      cell_rhs[i] =
+          -gradient[a] + pattern_.cell_node_rest_area_m2()[cell][pattern_.local_node()[i]] *
+                             weight[pattern_.local_component()[i]];
       if (with_tangent)
         for (unsigned int j = 0; j < n_local; ++j)
           cell_matrix(i, j) = hessian(a, pattern_.node_major(j));
@@ -95,7 +96,7 @@ void MembraneAssembly::assemble(const DofVector& x, const ContactNodes& contact,
   dealii::Vector<double> vertex_rhs(3);
   std::vector<GlobalDof> vertex_dof_list(3);
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
-    const int node = pattern_.owned_nodes[k];
+    const int node = pattern_.owned_nodes()[k];
     const DofTriple& d = pattern_.carrier(node);
     Vec3 force_N;
     Mat3 stiffness_N_per_m;
@@ -129,23 +130,23 @@ double MembraneAssembly::energy_J(const DofVector& x, const ContactNodes& contac
   double energy = 0.0;
   std::vector<Vec2> grad_grain(n_element_nodes);
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
-    const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs[cell];
-    for (unsigned int q = 0; q < pattern_.cell_JxW_m2[cell].size(); ++q) {
-      std::copy_n(pattern_.cell_grad_grain[cell].begin() + q * n_element_nodes, n_element_nodes,
+    const dealii::ArrayView<const GlobalDof> dofs = pattern_.cell_dofs()[cell];
+    for (unsigned int q = 0; q < pattern_.cell_JxW_m2()[cell].size(); ++q) {
+      std::copy_n(pattern_.cell_grad_grain()[cell].begin() + q * n_element_nodes, n_element_nodes,
                   grad_grain.begin());
       Mat32 F = Mat32::Zero();
       for (unsigned int i = 0; i < dofs.size(); ++i)
-        F.row(pattern_.local_component[i]) +=
-            x(dofs[i]) * grad_grain[pattern_.local_node[i]].transpose();
-      energy += pattern_.cell_JxW_m2[cell][q] * problem_.law->energy(F.transpose() * F);
+        F.row(pattern_.local_component()[i]) +=
+            x(dofs[i]) * grad_grain[pattern_.local_node()[i]].transpose();
+      energy += pattern_.cell_JxW_m2()[cell][q] * problem_.law->energy(F.transpose() * F);
     }
     // The weight's work, as the right-hand side's load (assemble()).
     for (unsigned int i = 0; i < dofs.size(); ++i)
-      energy -= pattern_.cell_node_rest_area_m2[cell][pattern_.local_node[i]] *
-                weight[pattern_.local_component[i]] * x(dofs[i]);
+      energy -= pattern_.cell_node_rest_area_m2()[cell][pattern_.local_node()[i]] *
+                weight[pattern_.local_component()[i]] * x(dofs[i]);
   }
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
-    const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes[k]);
+    const Vec3 p = pattern_.node_position(x, pattern_.owned_nodes()[k]);
     const double kA = contact.penalty_N_per_m[k];
     const double lambda = contact_multiplier_N(
         contact.multiplier_N[k], kA, contact.query(*problem_.body, k, p).signed_distance_m);
@@ -157,13 +158,13 @@ double MembraneAssembly::energy_J(const DofVector& x, const ContactNodes& contac
 double MembraneAssembly::potential_defect_N(const DofVector& x, const ContactNodes& contact) const {
   double sum_squared = 0.0;
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
-    const int node = pattern_.owned_nodes[k];
+    const int node = pattern_.owned_nodes()[k];
     const SurfacePoint s = contact.query(*problem_.body, k, pattern_.node_position(x, node));
     const double lambda = contact_multiplier_N(contact.multiplier_N[k], contact.penalty_N_per_m[k],
                                                s.signed_distance_m);
     if (lambda <= 0.0) continue;
     Vec3 defect = lambda * (s.outward_normal - s.gap_gradient);
-    pattern_.node_constrained.remove_constrained(node, defect);
+    pattern_.node_constrained().remove_constrained(node, defect);
     sum_squared += defect.squaredNorm();
   }
   return std::sqrt(dealii::Utilities::MPI::sum(sum_squared, comm_));
@@ -175,15 +176,15 @@ std::vector<Vec3> MembraneAssembly::internal_force_N(const DofVector& x) const {
   Eigen::VectorXd gradient;
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
     cell_kernel(cell, x, gradient, nullptr);
-    for (unsigned int i = 0; i < pattern_.cell_dofs[cell].size(); ++i)
-      gradient_dofs(pattern_.cell_dofs[cell][i]) += gradient[pattern_.node_major(i)];
+    for (unsigned int i = 0; i < pattern_.cell_dofs()[cell].size(); ++i)
+      gradient_dofs(pattern_.cell_dofs()[cell][i]) += gradient[pattern_.node_major(i)];
   }
   gradient_dofs.compress(dealii::VectorOperation::add);
   gradient_dofs.update_ghost_values();
   // Each owned vertex's force, summed over its copies (the first carries it), then gathered.
   std::vector<Vec3> owned_force(pattern_.n_owned_nodes(), Vec3::Zero());
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k)
-    for (const DofTriple& d : pattern_.copies(pattern_.owned_nodes[k]))
+    for (const DofTriple& d : pattern_.copies(pattern_.owned_nodes()[k]))
       owned_force[k] -= Vec3(gradient_dofs(d[0]), gradient_dofs(d[1]), gradient_dofs(d[2]));
   std::vector<Vec3> force = pattern_.gather_nodes(owned_force);
   force.resize(pattern_.n_vertices());  // the vertices come first
@@ -214,7 +215,7 @@ void MembraneAssembly::linearise(const std::vector<Vec3>& node_positions_m,
   std::vector<int> row(n_local);
   for (int cell = 0; cell < pattern_.n_cells(); ++cell) {
     cell_kernel(cell, x, gradient, &hessian);
-    for (unsigned int i = 0; i < n_local; ++i) row[i] = dof_row[pattern_.cell_dofs[cell][i]];
+    for (unsigned int i = 0; i < n_local; ++i) row[i] = dof_row[pattern_.cell_dofs()[cell][i]];
     for (unsigned int i = 0; i < n_local; ++i) {
       const int a = pattern_.node_major(i);
       residual_N[row[i]] += gradient[a];

@@ -7,7 +7,7 @@
 
 #include "fem/contact_nodes.h"
 #include "fem/newton_system.h"
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 
 #include <Eigen/Core>
 
@@ -17,7 +17,7 @@ class MembraneAssembly {
  public:
   // `symmetric_tangent`: the contact's tangent symmetrised (contact/nodal_contact.h), for CG;
   // otherwise its exact derivative (unsymmetric on a mesh body, and with friction).
-  MembraneAssembly(const PatternMesh& pattern, const Problem& problem, bool symmetric_tangent,
+  MembraneAssembly(const ReferenceMesh& pattern, const Problem& problem, bool symmetric_tangent,
                    MPI_Comm comm);
 
   // system.rhs = -R(x), constrained; system.tangent = dR/dx when with_tangent. The tangent
@@ -64,14 +64,14 @@ class MembraneAssembly {
   // rho_A g: the weight per unit rest area, N/m^2 (zero without a fabric).
   Vec3 weight_per_rest_area() const;
 
-  // The contact force on owned node k (pattern.owned_nodes[k]) at p (normal, and with friction
+  // The contact force on owned node k (pattern.owned_nodes()[k]) at p (normal, and with friction
   // the return mapping from the anchors of the last accepted state), on the sides of the contact
   // and friction kinks the step's prediction holds (contact_set_prediction.h), and, with_tangent,
   // minus its derivative. Returns false when the node is out of contact (no force, no stiffness).
   bool node_contact(int k, const Vec3& p, const ContactNodes& contact, bool with_tangent,
                     Vec3& force_N, Mat3& stiffness_N_per_m) const;
 
-  const PatternMesh& pattern_;
+  const ReferenceMesh& pattern_;
   const Problem& problem_;
   bool symmetric_tangent_;
   MPI_Comm comm_;

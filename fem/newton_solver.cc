@@ -42,13 +42,13 @@ double stop_threshold_N(const FemParameters& parameters, double stiffness_force_
 
 }  // namespace
 
-NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
+NewtonSolver::NewtonSolver(const ReferenceMesh& pattern, const FemParameters& parameters,
                            double stiffness_scale_N_per_m, double tension_scale_N,
                            const RigidBody* body, MPI_Comm comm)
     : pattern_(pattern),
       parameters_(parameters),
       stiffness_scale_N_per_m_(stiffness_scale_N_per_m),
-      tolerance_N_(stop_threshold_N(parameters, stiffness_scale_N_per_m * pattern.mean_edge_m,
+      tolerance_N_(stop_threshold_N(parameters, stiffness_scale_N_per_m * pattern.mean_edge_m(),
                                     tension_scale_N)),
       shared_tolerance_N_(parameters.stop.relative_tolerance > 0.0
                               ? relative_threshold_N(parameters.stop, tension_scale_N)
@@ -57,19 +57,20 @@ NewtonSolver::NewtonSolver(const PatternMesh& pattern, const FemParameters& para
       comm_(comm),
       linear_solver_(std::make_unique<PetscLinearSolver>(parameters.linear_solver,
                                                          parameters.max_linear_iterations, comm)) {
-  const dealii::IndexSet& owned = pattern.owned_dofs;
+  const dealii::IndexSet& owned = pattern.owned_dofs();
   dof_weight_.assign(owned.n_elements(), 1.0);
   for (int node = 0; node < pattern.n_local_nodes(); ++node)
     for (const DofTriple& copy : pattern.copies(node))
       for (const GlobalDof i : copy)
         if (owned.is_element(i))
-          dof_weight_[owned.index_within_set(i)] = pattern.mean_edge_m / pattern.node_edge_m[node];
+          dof_weight_[owned.index_within_set(i)] =
+              pattern.mean_edge_m() / pattern.node_edge_m()[node];
 }
 
 double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
   ResidualSize size;
   std::size_t k = 0;  // i's position among the owned DoFs (the range visits them in order)
-  for (const GlobalDof i : pattern_.owned_dofs)
+  for (const GlobalDof i : pattern_.owned_dofs())
     size.add(std::abs(system.rhs(i)) * dof_weight_[k++]);
   // A node's residual vector lies on its free DoFs (a seam's other copies and a held
   // direction's DoF carry none): the sum over DoFs is the sum of |R_k|^2 over the nodes.
@@ -83,11 +84,11 @@ double NewtonSolver::scaled_residual_N(const NewtonSystem& system) const {
 std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofVector& x_owned,
                                           const NewtonLog& log) const {
   DofVector rhs = pattern_.dof_vector();
-  for (const auto i : pattern_.owned_dofs) rhs(i) = system.rhs(i);
+  for (const auto i : pattern_.owned_dofs()) rhs(i) = system.rhs(i);
   rhs.update_ghost_values();
   // rhs = -R: the residual force on each owned node, summed over its copies; then every node's.
   std::vector<Vec3> owned_positions, owned_residual;
-  for (const int node : pattern_.owned_nodes) {
+  for (const int node : pattern_.owned_nodes()) {
     owned_positions.push_back(pattern_.node_position(x_owned, node));
     owned_residual.push_back(pattern_.node_position(rhs, node));
     const ListView<DofTriple> copies = pattern_.copies(node);
@@ -107,7 +108,7 @@ std::string NewtonSolver::failure_details(const NewtonSystem& system, const DofV
     // How much of the last increment moved the garment as a whole: most of it where the step
     // crept along a motion the body barely resists (docs/backends.md, "Newton's line search").
     std::vector<Vec3> owned_increment;
-    for (const int node : pattern_.owned_nodes)
+    for (const int node : pattern_.owned_nodes())
       owned_increment.push_back(pattern_.node_position(last_increment_, node));
     const std::vector<Vec3> increment = pattern_.gather_nodes(owned_increment);
     if (!positions.empty())
@@ -126,11 +127,11 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
                                       NewtonSystem& system, NewtonLog& log) {
   try {
     // GAMG's rigid motions: a DoF's coordinate is its own position value, since the DoFs are
-    // the nodes' positions, numbered in a node's x, y, z rows (PatternMesh::dofs_in_node_blocks).
+    // the nodes' positions, numbered in a node's x, y, z rows (ReferenceMesh::dofs_in_node_blocks).
     dealii::PETScWrappers::MPI::Vector coordinates;
-    if (linear_solver_->needs_node_coordinates() && pattern_.dofs_in_node_blocks) {
-      coordinates.reinit(pattern_.owned_dofs, comm_);
-      for (const GlobalDof i : pattern_.owned_dofs) coordinates(i) = x(i);
+    if (linear_solver_->needs_node_coordinates() && pattern_.dofs_in_node_blocks()) {
+      coordinates.reinit(pattern_.owned_dofs(), comm_);
+      for (const GlobalDof i : pattern_.owned_dofs()) coordinates(i) = x(i);
       coordinates.compress(dealii::VectorOperation::insert);
     }
     const LinearSolveResult result = linear_solver_->solve(
@@ -159,7 +160,7 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
 
 double NewtonSolver::owned_dot(const NewtonSystem& system, const DofVector& increment) const {
   double sum = 0.0;
-  for (const GlobalDof i : pattern_.owned_dofs) sum += system.rhs(i) * increment(i);
+  for (const GlobalDof i : pattern_.owned_dofs()) sum += system.rhs(i) * increment(i);
   return dealii::Utilities::MPI::sum(sum, comm_);
 }
 
@@ -168,7 +169,8 @@ void NewtonSolver::ghosted_increment(NewtonSystem& system, DofVector& increment)
   // DoFs they follow (other ranks' among them fetched by deal.II); the solver zeroes the vector
   // before its next solve, so it may be changed here.
   system.constraints.distribute(system.increment);
-  if (increment.get_partitioner() != pattern_.partitioner) increment.reinit(pattern_.partitioner);
+  if (increment.get_partitioner() != pattern_.partitioner())
+    increment.reinit(pattern_.partitioner());
   // Both hold this rank's DoFs, one contiguous range, in ascending order.
   const PetscScalar* values = nullptr;
   VecGetArrayRead(system.increment, &values);
@@ -184,7 +186,7 @@ void NewtonSolver::ghosted_increment(NewtonSystem& system, DofVector& increment)
 int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system,
                         DofVector& x, NewtonLog& log) {
   const double tolerance = tolerance_N();
-  const double mean_edge_m = pattern_.mean_edge_m;
+  const double mean_edge_m = pattern_.mean_edge_m();
   std::vector<double>& history_N = log.residual_N;
   assemble(x, true);
   int slow_iterations = 0;

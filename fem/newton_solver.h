@@ -9,8 +9,8 @@
 #include "fem/fem_parameters.h"
 #include "fem/held_turn_system.h"
 #include "fem/newton_system.h"
-#include "fem/pattern_mesh.h"
 #include "fem/petsc_linear_solver.h"
+#include "fem/reference_mesh.h"
 
 #include <algorithm>
 #include <functional>
@@ -49,14 +49,14 @@ class NewtonSolver {
   // increment, returns every node to its own side at the point assembled.
   using ContactSetPredictor = std::function<int(const DofVector& x, const DofVector* increment)>;
 
-  // Y = stiffness_scale_N_per_m, h = pattern.mean_edge_m. The stop rule's force is 'Residual
+  // Y = stiffness_scale_N_per_m, h = pattern.mean_edge_m(). The stop rule's force is 'Residual
   // tolerance' times Y h or, when 'Relative tolerance' is set, that times tension_scale_N, the
   // mass-spring backend's Y h^2 / L (core/tension_scale.h). The step is capped at half of h. On a
-  // graded mesh each node's residual counts relative to its own edge h_k (pattern.node_edge_m): the
-  // stop rule reads R_k h / h_k, the force the same strain error would leave on a node of mean
+  // graded mesh each node's residual counts relative to its own edge h_k (pattern.node_edge_m()):
+  // the stop rule reads R_k h / h_k, the force the same strain error would leave on a node of mean
   // size, its largest component or the rms of the nodes' vectors ('Stop norm'). `body` (may be
   // null) names where a failed step's residual sits.
-  NewtonSolver(const PatternMesh& pattern, const FemParameters& parameters,
+  NewtonSolver(const ReferenceMesh& pattern, const FemParameters& parameters,
                double stiffness_scale_N_per_m, double tension_scale_N, const RigidBody* body,
                MPI_Comm comm);
 
@@ -117,7 +117,7 @@ class NewtonSolver {
   [[noreturn]] void fail(StopReason reason, const LoadStep& step, const std::string& what,
                          double residual_N, const std::string& details = "") const;
 
-  const PatternMesh& pattern_;
+  const ReferenceMesh& pattern_;
   FemParameters parameters_;
   double stiffness_scale_N_per_m_;
   double tolerance_N_;
@@ -132,7 +132,7 @@ class NewtonSolver {
   // Levenberg-Marquardt shift of the tangent from line-search failures, N/m (the residual's
   // own shift, 'Residual shift factor', is added in solve()).
   double shift_N_per_m_ = 0.0;
-  // Per DoF this rank owns (in the order of pattern.owned_dofs), h / h_k of the node it belongs
+  // Per DoF this rank owns (in the order of pattern.owned_dofs()), h / h_k of the node it belongs
   // to (every copy of a seam node alike).
   std::vector<double> dof_weight_;
   // Whether the line search cut the last iteration's step (its next step is then solved on the

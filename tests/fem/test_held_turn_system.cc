@@ -32,7 +32,7 @@ using Field = std::function<Vec3(const Vec3& x)>;
 struct HeldTube {
   int started = start_mpi();  // before the PETSc objects below
   testing::TubeCase tube{"linear biot", EndCondition::free_ends};
-  std::unique_ptr<PatternMesh> pattern;
+  std::unique_ptr<ReferenceMesh> pattern;
   NewtonSystem system;
   DofVector x;
   std::vector<Vec3> positions;
@@ -43,7 +43,7 @@ struct HeldTube {
     all.direction = Vec3::UnitZ();
     for (int v = 0; v < tube.mesh.n_vertices; ++v) all.vertices.push_back(v);
     tube.problem.constraints = {all};
-    pattern = std::make_unique<PatternMesh>(tube.problem, 1, MPI_COMM_WORLD);
+    pattern = std::make_unique<ReferenceMesh>(tube.problem, 1, MPI_COMM_WORLD);
     positions = tube.placed(1.02 * tube.rest_radius_m);
     build_constraints_and_system(*pattern, tube.problem, positions, MPI_COMM_WORLD, system);
     x = pattern->dof_positions(positions);
@@ -53,9 +53,9 @@ struct HeldTube {
   Vec3 centre() const {
     Vec3 c = Vec3::Zero();
     double w = 0.0;
-    for (const int node : pattern->owned_nodes) {
-      c += pattern->node_contact_area_m2[node] * pattern->node_position(x, node);
-      w += pattern->node_contact_area_m2[node];
+    for (const int node : pattern->owned_nodes()) {
+      c += pattern->node_contact_area_m2()[node] * pattern->node_position(x, node);
+      w += pattern->node_contact_area_m2()[node];
     }
     return c / w;
   }
@@ -63,9 +63,9 @@ struct HeldTube {
   // The nodal forces `force` (scaled by each node's rest area when `per_area`) on the free DoFs,
   // as the assembly sums them: C^T f.
   PetscVector forces(const Field& force) const {
-    PetscVector rhs(pattern->owned_dofs, MPI_COMM_WORLD);
-    for (const int node : pattern->owned_nodes) {
-      const Vec3 f = pattern->node_contact_area_m2[node] * force(pattern->node_position(x, node));
+    PetscVector rhs(pattern->owned_dofs(), MPI_COMM_WORLD);
+    for (const int node : pattern->owned_nodes()) {
+      const Vec3 f = pattern->node_contact_area_m2()[node] * force(pattern->node_position(x, node));
       const DofTriple& d = pattern->carrier(node);
       dealii::Vector<double> local(3);
       for (int c = 0; c < 3; ++c) local[c] = f[c];
@@ -78,8 +78,8 @@ struct HeldTube {
 
   // A displacement field on the free DoFs (the constrained ones follow from them).
   PetscVector displacement(const Field& u) const {
-    PetscVector v(pattern->owned_dofs, MPI_COMM_WORLD);
-    for (const int node : pattern->owned_nodes) {
+    PetscVector v(pattern->owned_dofs(), MPI_COMM_WORLD);
+    for (const int node : pattern->owned_nodes()) {
       const Vec3 value = u(pattern->node_position(x, node));
       const DofTriple& d = pattern->carrier(node);
       for (int c = 0; c < 3; ++c)
@@ -92,10 +92,10 @@ struct HeldTube {
   // K z = b with K = M, the rest areas on each free DoF: z_j = b_j / w(j).
   void solve_with_masses(const PetscVector& b, PetscVector& z) const {
     z = b;
-    for (const int node : pattern->owned_nodes)
+    for (const int node : pattern->owned_nodes())
       for (const GlobalDof j : pattern->carrier(node))
         if (!system.constraints.is_constrained(j))
-          z(j) = b(j) / pattern->node_contact_area_m2[node];
+          z(j) = b(j) / pattern->node_contact_area_m2()[node];
     z.compress(dealii::VectorOperation::insert);
   }
 };
@@ -110,7 +110,7 @@ TEST(HeldTurnSystem, ActiveWhenEveryVertexIsHeldAlongOneDirection) {
   HeldTube held;
   EXPECT_TRUE(HeldTurnSystem(*held.pattern, false).active());
   testing::TubeCase free_tube("linear biot", EndCondition::held_ends);
-  const PatternMesh ends_only(free_tube.problem, 1, MPI_COMM_WORLD);
+  const ReferenceMesh ends_only(free_tube.problem, 1, MPI_COMM_WORLD);
   EXPECT_FALSE(HeldTurnSystem(ends_only, false).active());
 }
 

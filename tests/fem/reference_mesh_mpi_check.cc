@@ -1,4 +1,4 @@
-// The pattern mesh split over the ranks (`mpirun -np N pattern_mesh_mpi_check [DEGREE
+// The reference mesh split over the ranks (`mpirun -np N reference_mesh_mpi_check [DEGREE
 // [mesh-on-rank-0]]`): every panel triangle is the own cell of exactly one rank; every node is
 // owned by exactly one rank and has one copy per panel it lies in, as the welded mesh counts
 // them; the nodes' rest areas, each summed over the ranks' cells by the node copies' exchange,
@@ -7,7 +7,7 @@
 // each cell's corners are its triangle's. With `mesh-on-rank-0` the pattern is built from a
 // problem that has the mesh and the held ends on rank 0 only (the check itself reads the mesh on
 // every rank). Exits non-zero on the first failed check.
-#include "fem/pattern_mesh.h"
+#include "fem/reference_mesh.h"
 #include "tube_problem.h"
 
 #include <deal.II/base/mpi.h>
@@ -26,7 +26,7 @@ int failures = 0;
 
 void check(bool ok, const std::string& what) {
   if (!ok) {
-    std::fprintf(stderr, "pattern_mesh_mpi_check: %s\n", what.c_str());
+    std::fprintf(stderr, "reference_mesh_mpi_check: %s\n", what.c_str());
     ++failures;
   }
 }
@@ -47,11 +47,11 @@ int main(int argc, char** argv) {
     problem.mesh = nullptr;
     problem.constraints.clear();
   }
-  const PatternMesh pattern(problem, degree, comm);
+  const ReferenceMesh pattern(problem, degree, comm);
 
   // Each triangle an own cell of one rank.
   std::vector<int> own(mesh.triangles.size(), 0), owners(mesh.triangles.size(), 0);
-  for (const int t : pattern.cell_index) ++own[t];
+  for (const int t : pattern.cell_index()) ++own[t];
   dealii::Utilities::MPI::sum(own, comm, owners);
   check(pattern.n_all_cells() == static_cast<int>(mesh.triangles.size()),
         "the cells of all ranks are not the mesh's triangles");
@@ -88,11 +88,11 @@ int main(int argc, char** argv) {
   // areas' sum: measured within 7e-15 relative with either degree on 1 to 3 ranks; 1e-12 allowed.
   double contact_m2 = 0.0;
   int n_constrained = 0;
-  for (const int node : pattern.owned_nodes) {
-    contact_m2 += pattern.node_contact_area_m2[node];
-    check(pattern.node_edge_m[node] > 0.0,
+  for (const int node : pattern.owned_nodes()) {
+    contact_m2 += pattern.node_contact_area_m2()[node];
+    check(pattern.node_edge_m()[node] > 0.0,
           "node " + std::to_string(pattern.global_node(node)) + " has no edge length");
-    n_constrained += pattern.node_constrained.constrained(node);
+    n_constrained += pattern.node_constrained().constrained(node);
   }
   contact_m2 = dealii::Utilities::MPI::sum(contact_m2, comm);
   check(std::abs(contact_m2 - panels_m2) <= 1e-12 * panels_m2,
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
     held.insert(c.vertices.begin(), c.vertices.end());
   // With degree 2, the midpoints of the held rows' edges are held too.
   std::size_t expected_held = held.size();
-  for (const auto& ends : pattern.edge_ends)
+  for (const auto& ends : pattern.edge_ends())
     expected_held += held.count(ends[0]) && held.count(ends[1]);
   check(dealii::Utilities::MPI::sum(n_constrained, comm) == static_cast<int>(expected_held),
         "the constrained nodes are not the held rows' " + std::to_string(expected_held));
@@ -125,11 +125,11 @@ int main(int argc, char** argv) {
   check(pattern.n_dofs() == 3 * expected_nodes, std::to_string(pattern.n_dofs()) +
                                                     " DoFs, not 3 per panel node (" +
                                                     std::to_string(3 * expected_nodes) + ")");
-  check(pattern.dofs_in_node_blocks, "a node's DoFs are not one block of 3");
+  check(pattern.dofs_in_node_blocks(), "a node's DoFs are not one block of 3");
 
   if (degree == 2)
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      std::array<int, 3> cell = pattern.cell_vertices[t], triangle = mesh.triangles[t];
+      std::array<int, 3> cell = pattern.cell_vertices()[t], triangle = mesh.triangles[t];
       std::sort(cell.begin(), cell.end());
       std::sort(triangle.begin(), triangle.end());
       check(cell == triangle, "cell " + std::to_string(t) + "'s corners are not its triangle's");
