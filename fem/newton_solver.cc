@@ -308,7 +308,8 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // the set at x drove the nodes about to touch into the penalty, the line search cut it to an
     // eighth, and the step after it on the predicted set overshot (the stocking's first round
     // went 45 iterations so; with the set followed to its fixed point, 20).
-    if (potential_judges && parameters_.potential_globalization)
+    // Not with friction, which has no potential (its energy is NaN).
+    if (std::isfinite(energy_0_J) && parameters_.potential_globalization)
       prediction_rounds = std::max(prediction_rounds, kPredictionRoundsWhileTravelling);
     bool predict = predictor_ && prediction_rounds > 0, predicted = false, reassemble = false;
     // How often the shift has grown in this iteration (after a failed solve or line search).
