@@ -115,12 +115,14 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "steps by the potential (the membrane's energy, the contact penalty's "
                     "potential, less the weight's work) while the residual is well above the "
                     "potential's defect on a mesh body, a step uphill in it or cut below an "
-                    "eighth grows the tangent's shift, and a step the line search cut is "
-                    "followed by one solve on the contact set it predicts; where that defect is "
-                    "also above the shared stop rule (Solver/Relative tolerance times the "
-                    "tension scale), the residual norm alone judges the rest of the load step, "
-                    "a first solve starting again from the step's start. residual: the "
-                    "residual norm alone decides, with no prediction after a cut step.");
+                    "eighth grows the tangent's shift, and each step is solved again on the "
+                    "contact set it predicts (up to 5 times); later, a step the line search cut "
+                    "is followed by one solve on the contact set it predicts; where that defect "
+                    "is also above the shared stop rule (Solver/Relative tolerance times the "
+                    "tension scale) and the garment's turn is not held, the residual norm alone "
+                    "judges the rest of the load step, a first solve starting again from the "
+                    "step's start. residual: the residual norm alone decides, with no "
+                    "prediction after a cut step.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");
   prm.declare_entry("Contact set predictions", std::to_string(d.max_contact_set_predictions),
@@ -131,9 +133,9 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "offset from its anchor and normal force say, until the sides the step was "
                     "solved on are those it predicts (a primal-dual active-set step; "
                     "fem/contact_set_prediction.h). 0: a step is solved again on its predicted "
-                    "set only after a step the line search cut (once), every other step on the "
-                    "nodes in contact where it starts (docs/backends.md, \"Newton's line "
-                    "search\").");
+                    "set only while the potential judges (up to 5 times, Globalization) and after "
+                    "a step the line search cut (once), every other step on the nodes in contact "
+                    "where it starts (docs/backends.md, \"Newton's line search\").");
   prm.declare_entry(
       "Penalty factor", "100", Double(1e-3, 1e12),
       "Contact penalty k = beta Y / h_k^2 in Pa/m at each node (Y the law's stiffness "

@@ -243,21 +243,25 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // minutes: ||R||_2 alone judges the rest of the load step, as 'Globalization = residual'
     // does, and a first solve starts again from where it started (its potential-led path
     // ended where ||R|| alone crept for hundreds of iterations, the tube turning round the
-    // leg). With the turn held (held_turn_system.h) there is no such creep and the solve goes
-    // on from where the potential left it: the stocking then takes 58 iterations, against 271
-    // when it starts again. On the analytic bodies the defect is zero and the potential stays
+    // leg). With the turn held (held_turn_system.h) there is no such creep, and the potential
+    // stays trusted (below). On the analytic bodies the defect is zero and the potential stays
     // trusted.
     if (potential_on && potential_trusted_) {
       const double defect_N = defect_ ? defect_(x) : 0.0;
       if (norm_0 <= kDefectRatio * defect_N) {
         potential_judges = false;
-        if (defect_N > shared_tolerance_N_) {
+        // With the turn held the potential stays trusted: on the smooth contact surface its
+        // defect is of order the gap (MeshBody's normal n against grad g, phi H n / m^2), which
+        // the rounds close, and ||R|| alone crept there (the coarse stocking's first round:
+        // steps of 1/512 for hundreds of iterations; trusted, 31 iterations).
+        const bool turn_held = held_turn_ && held_turn_->active();
+        if (defect_N > shared_tolerance_N_ && !turn_held) {
           potential_trusted_ = false;
           std::ostringstream note;
           note.precision(3);
           note << "the potential's defect " << defect_N << " N against ||R||_2 " << norm_0
                << " N at iteration " << iteration << ": ||R|| alone judges";
-          if (x_start.size() > 0 && iteration > 0 && !(held_turn_ && held_turn_->active())) {
+          if (x_start.size() > 0 && iteration > 0) {
             note << ", from the step's start";
             x = x_start;
             shift_N_per_m_ = 0.0;
@@ -295,10 +299,18 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
     // was the wrong one to linearise on (nodes the step drives into the body meet no penalty in
     // it), and re-solving on the set the step reaches is what lets the next step be taken
     // whole (docs/backends.md, "Newton's line search").
-    const int prediction_rounds =
+    int prediction_rounds =
         step_cut_ && parameters_.potential_globalization && potential_trusted_
             ? std::max(parameters_.max_contact_set_predictions, kPredictionRoundsAfterCut)
             : parameters_.max_contact_set_predictions;
+    // While the potential judges (the travel onto the body), every step is solved on the
+    // contact set it reaches, up to kPredictionRoundsWhileTravelling times: a step linearised on
+    // the set at x drove the nodes about to touch into the penalty, the line search cut it to an
+    // eighth, and the step after it on the predicted set overshot (the stocking's first round
+    // went 45 iterations so; with the set followed to its fixed point, 20).
+    // Not with friction, which has no potential (its energy is NaN).
+    if (std::isfinite(energy_0_J) && parameters_.potential_globalization)
+      prediction_rounds = std::max(prediction_rounds, kPredictionRoundsWhileTravelling);
     bool predict = predictor_ && prediction_rounds > 0, predicted = false, reassemble = false;
     // How often the shift has grown in this iteration (after a failed solve or line search).
     int escalations = 0;

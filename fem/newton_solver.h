@@ -147,6 +147,9 @@ class NewtonSolver {
   // Prediction rounds of a step after a cut one: 1 took the tubes on mesh bodies through in
   // 11 to 23 iterations where the contact set at x took them nowhere (docs/performance.md).
   static constexpr int kPredictionRoundsAfterCut = 1;
+  // Prediction rounds of every step while the potential judges (see solve()): the stocking's
+  // set reached its fixed point within 5.
+  static constexpr int kPredictionRoundsWhileTravelling = 5;
   // The potential's relative round-off, over its sum of cells and nodes (see solve()).
   static constexpr double kPotentialRoundOff = 1e-12;
   // ||R||_2 over the potential's defect (see solve()) above which the potential judges steps.

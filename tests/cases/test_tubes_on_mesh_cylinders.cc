@@ -147,8 +147,11 @@ TEST(TubeOnEllipticMeshCylinder, PressureFollowsCurvatureOnBothBackends) {
     if (r.run.steps.empty()) return;
     ratio[k] =
         end_pressure_Pa(r, major_direction, window) / end_pressure_Pa(r, minor_direction, window);
-    std::printf("%s: major/minor end pressure %.4f, curvature's %.4f ((a/b)^3 = %.4f)\n", backend,
-                ratio[k], expected, std::pow(a / b, 3));
+    std::printf(
+        "%s: major/minor end pressure %.4f, curvature's %.4f ((a/b)^3 = %.4f); mean %.3f Pa, %d "
+        "Newton/relaxation iterations\n",
+        backend, ratio[k], expected, std::pow(a / b, 3), r.last().p_mean_Pa(),
+        r.last().report.iterations);
     EXPECT_NEAR(ratio[k] / expected, 1.0, 0.03) << backend;
     ++k;
   }

@@ -100,12 +100,12 @@ TEST(FemStopRule, ContactSetPredictionsReachThePlainNewtonEquilibrium) {
               plain.p_mean_Pa, plain.report.iterations, predicted.p_mean_Pa,
               predicted.report.iterations, predicted.report.text().c_str());
   EXPECT_LE(predicted.report.residual_N, predicted.report.tolerance_N);
-  // The predicted path was taken, and it saves Newton steps here (measured 8 against 9; the
-  // plain run predicts once, after the one step its line search cut).
+  // The predicted path was taken. Without the entry a step is predicted only while the
+  // potential judges (the first solve) and after one the line search cut (newton_solver.h): here
+  // the one prediction of the first solve, and the same 8 Newton steps either way (measured).
   EXPECT_GT(predicted.report.newton.n_set_predictions, 0);
-  // Without the entry a step is predicted only after one the line search cut (newton_solver.h).
   EXPECT_LE(plain.report.newton.n_set_predictions, predicted.report.newton.n_set_predictions);
-  EXPECT_LT(predicted.report.iterations, plain.report.iterations);
+  EXPECT_LE(predicted.report.iterations, plain.report.iterations);
   // Both meet the tight rule (1e-10 Y h): the same state (measured equal to 10 digits).
   EXPECT_NEAR(predicted.p_mean_Pa, plain.p_mean_Pa, 1e-9 * plain.p_mean_Pa);
 }
