@@ -9,7 +9,7 @@
 //   11.5 N of normal force; the bound is the stop rule's residual per vertex times the vertices,
 //   4.3e-3 N);
 // - the band presses (most of it in contact) with a pressure map that is finite and >= 0.
-// And the mean pressure rises as the waist grows from 65.2 to 77.3 cm round (the band is 60).
+// And the mean pressure rises as the waist grows from 65.2 to 74.7 cm round (the band is 60).
 // The band is placed from the female's landmarks (Centre = torso at waist, Radius = waist + 0.01).
 #include "core/garment.h"
 #include "core/load_step.h"
