@@ -324,8 +324,9 @@ void declare_stop_rule(ParameterHandler& prm) {
                     "Largest penetration of a vertex in contact at a finished load step with "
                     "contact multiplier updates, m (both backends). auto: 1e-6 on a body mesh "
                     "with Body/Mesh/Contact surface = faceted (the rounds on the flat faces stall "
-                    "between 1e-7 and 5e-7 m on the FE backend), 1e-8 elsewhere, in both cases "
-                    "raised to the gap the stop rule resolves, Relative tolerance times h^2 / L "
+                    "between 1e-7 and 5e-7 m on the FE backend), 1e-8 elsewhere; on a body mesh "
+                    "(Body/Kind = mesh or morph) raised to the gap the stop rule resolves, "
+                    "Relative tolerance times h^2 / L "
                     "(h the mean rest edge, L the square root of the rest area, m): the stop "
                     "rule's residual over the stiffness Y of a vertex the membrane alone holds "
                     "(docs/backends.md, 'The gap the stop rule resolves'). A number is used as "
@@ -370,7 +371,10 @@ StopRule parse_stop_rule(ParameterHandler& prm) {
       norm == "rms" || (norm == "auto" && rule.faceted_body) ? StopNorm::rms : StopNorm::largest;
   const std::optional<double> gap_m = auto_or_number(gap, "Solver/Gap tolerance");
   rule.gap_tolerance_m = gap_m.value_or(rule.faceted_body ? 1e-6 : 1e-8);
-  rule.gap_tolerance_auto = !gap_m;
+  prm.enter_subsection("Body");
+  const std::string body_kind = prm.get("Kind");
+  prm.leave_subsection();
+  rule.gap_tolerance_auto = !gap_m && (body_kind == "mesh" || body_kind == "morph");
   return rule;
 }
 

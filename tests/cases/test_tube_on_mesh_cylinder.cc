@@ -78,8 +78,7 @@ TEST_P(TubeOnMeshCylinder, MeanPressureWithinTheFacetsChordError) {
   const double p_cylinder =
       mean_pressure_Pa({"Body/Kind=cylinder", "Body/Cylinder/Axis=0,0,1",
                         setting("Body/Cylinder/Initial radius", rho * (1 - 1e-12)),
-                        "Protocol/Alpha increment=0.5", setting("Protocol/Final alpha", kAlpha),
-                        "Solver/Gap tolerance=1e-8"},  // the prisms' (below)
+                        "Protocol/Alpha increment=0.5", setting("Protocol/Final alpha", kAlpha)},
                        GetParam());
   // Both surfaces settle as the cylinder does (the defaults elsewhere than on a faceted body
   // mesh, whose own, the rms at 3e-3, would loosen the stop rule beyond the facets' effect
