@@ -6,6 +6,7 @@
 #include "cases/parameter_tree.h"
 #include "cases/scenario_parts.h"
 #include "core/backend_registry.h"
+#include "core/garment.h"
 #include "core/number_text.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -323,7 +324,13 @@ void declare_stop_rule(ParameterHandler& prm) {
                     "Largest penetration of a vertex in contact at a finished load step with "
                     "contact multiplier updates, m (both backends). auto: 1e-6 on a body mesh "
                     "with Body/Mesh/Contact surface = faceted (the rounds on the flat faces stall "
-                    "between 1e-7 and 5e-7 m on the FE backend), 1e-8 elsewhere.");
+                    "between 1e-7 and 5e-7 m on the FE backend), 1e-8 elsewhere; on a body mesh "
+                    "(Body/Kind = mesh or morph) raised to the gap the stop rule resolves, "
+                    "Relative tolerance times h^2 / L "
+                    "(h the mean rest edge, L the square root of the rest area, m): the stop "
+                    "rule's residual over the stiffness Y of a vertex the membrane alone holds "
+                    "(docs/backends.md, 'The gap the stop rule resolves'). A number is used as "
+                    "given.");
 }
 
 // The stop rule's entries once lived in each backend's subsection, with other defaults: a case
@@ -362,8 +369,12 @@ StopRule parse_stop_rule(ParameterHandler& prm) {
                                 .value_or(rule.faceted_body ? 3e-3 : 1e-4);
   rule.norm =
       norm == "rms" || (norm == "auto" && rule.faceted_body) ? StopNorm::rms : StopNorm::largest;
-  rule.gap_tolerance_m =
-      auto_or_number(gap, "Solver/Gap tolerance").value_or(rule.faceted_body ? 1e-6 : 1e-8);
+  const std::optional<double> gap_m = auto_or_number(gap, "Solver/Gap tolerance");
+  rule.gap_tolerance_m = gap_m.value_or(rule.faceted_body ? 1e-6 : 1e-8);
+  prm.enter_subsection("Body");
+  const std::string body_kind = prm.get("Kind");
+  prm.leave_subsection();
+  rule.gap_tolerance_auto = !gap_m && (body_kind == "mesh" || body_kind == "morph");
   return rule;
 }
 
@@ -649,7 +660,12 @@ std::unique_ptr<Backend> CaseFile::create_backend(const std::string& name,
                                 std::to_string(problem.friction_coefficient) + ": the " + name +
                                 " backend has no friction yet; set it to 0 or use Solver/Backend "
                                 "= massspring");
-  return entry.create(problem, parse_stop_rule(*prm_), *prm_);
+  // Solver/Gap tolerance = auto asks no gap the stop rule cannot resolve on this mesh
+  // (core/load_step.h).
+  StopRule rule = parse_stop_rule(*prm_);
+  rule.raise_gap_tolerance_to_stop_rule(mean_rest_edge_length_m(*problem.mesh),
+                                        rest_area(*problem.mesh));
+  return entry.create(problem, rule, *prm_);
 }
 
 void CaseFile::print(std::ostream& out, ParameterFormat format) const {

@@ -17,6 +17,16 @@ void StopRule::validate(bool zero_tolerance_allowed) const {
     throw std::invalid_argument("Solver/Gap tolerance must be positive (m)");
 }
 
+double StopRule::resolvable_gap_m(double mean_rest_edge_m, double rest_area_m2) const {
+  // The residual e Y h^2 / L over the stiffness Y of a vertex the membrane alone holds.
+  return relative_tolerance * mean_rest_edge_m * mean_rest_edge_m / std::sqrt(rest_area_m2);
+}
+
+void StopRule::raise_gap_tolerance_to_stop_rule(double mean_rest_edge_m, double rest_area_m2) {
+  if (gap_tolerance_auto)
+    gap_tolerance_m = std::max(gap_tolerance_m, resolvable_gap_m(mean_rest_edge_m, rest_area_m2));
+}
+
 double ResidualSize::read(StopNorm norm, double largest_N, double sum_squared, double count) {
   if (!std::isfinite(sum_squared)) return std::numeric_limits<double>::quiet_NaN();
   return norm == StopNorm::rms ? std::sqrt(sum_squared / count) : largest_N;

@@ -21,6 +21,10 @@ struct StopRule {
   StopNorm norm = StopNorm::largest;
   // Largest penetration of a vertex in contact at a finished step with multiplier updates, m.
   double gap_tolerance_m = 1e-8;
+  // Solver/Gap tolerance = auto on a body mesh (Body/Kind = mesh or morph): gap_tolerance_m is
+  // the default, raised to the gap the stop rule resolves on the garment's mesh
+  // (raise_gap_tolerance_to_stop_rule).
+  bool gap_tolerance_auto = false;
   // The case's body is a mesh touched on its flat faces (Body/Mesh/Contact surface = faceted):
   // the entries left at auto, here and in a backend's subsection, take their values for it
   // (the mass-spring settle's in massspring/massspring_parameters.h).
@@ -29,6 +33,19 @@ struct StopRule {
   // Throws std::invalid_argument naming the Solver entry when a value is out of range;
   // `zero_tolerance_allowed` for a backend with a rule of its own at 0.
   void validate(bool zero_tolerance_allowed) const;
+
+  // The smallest penetration the stop rule can tell from zero on a mesh of mean rest edge h and
+  // rest area L^2, m (docs/backends.md, "The gap the stop rule resolves"): a vertex at the border
+  // of the contact area, its penalty spring off, is set by the membrane alone, a stiffness of
+  // about the law's Y, and a settle leaves it a residual up to the stop rule's e Y h^2 / L, so
+  // its place, and the penetration it brings into contact at the next update, is uncertain by
+  // e h^2 / L, whatever Y. 0 when the relative rule is off (e = 0).
+  double resolvable_gap_m(double mean_rest_edge_m, double rest_area_m2) const;
+  // With gap_tolerance_auto, raises gap_tolerance_m to resolvable_gap_m: a gap the stop rule
+  // cannot resolve is not asked for. A gap tolerance set in the case stays as set. (On the
+  // analytic bodies the rounds close to 1e-8 m, each update dividing the gap by about 1 + k A / K,
+  // and the light sheet on the plane needs them to, docs/backends.md.)
+  void raise_gap_tolerance_to_stop_rule(double mean_rest_edge_m, double rest_area_m2);
 };
 
 // The size of a residual force field as the stop rule reads it: fed one size at a time (a
