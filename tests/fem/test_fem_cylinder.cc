@@ -239,6 +239,10 @@ TEST(CylinderFailure, NewtonFailureNamesTheStepAndResidual) {
   } catch (const SolverError& e) {
     const std::string what = e.what();
     EXPECT_EQ(e.reason(), StopReason::iteration_limit) << what;
+    // The failed step as fields, copied from the step asked for.
+    EXPECT_EQ(e.failure().step_index, 7);
+    EXPECT_EQ(e.failure().alpha, 1.8);
+    EXPECT_GT(e.failure().residual_N, e.failure().tolerance_N);
     // The message names the step for the user.
     EXPECT_NE(what.find("load step 7"), std::string::npos) << what;
     EXPECT_NE(what.find("alpha 1.8"), std::string::npos) << what;
