@@ -68,14 +68,13 @@ the leg's measuring points, the observed order from the three levels, the Richar
 and Roache's GCI (safety factor 1.25) of the finest level (columns in
 cases/convergence_run.h). The mass-spring backend runs its implicit route (RK4's approach, then
 Newton: [backends.md](backends.md), "On a mesh body"), whose cost grows with the vertices
-alone, where RK4's stable time step falls with the edge; the FE backend gets 300 Newton
-iterations a round, where the case allows 60:
+alone, where RK4's stable time step falls with the edge; the FE backend runs with its
+defaults:
 
     tightfit convergence cases/stocking_female.prm --levels 3 --backends massspring \
       --set "Measurements/List=regions, compression class" --set "Mass spring/Integrator=implicit"
     tightfit convergence cases/stocking_female.prm --levels 3 --backends fem \
-      --set "Measurements/List=regions, compression class" \
-      --set "Finite elements/Maximum Newton iterations=300"
+      --set "Measurements/List=regions, compression class"
 
 (`scripts/stocking-convergence.sh` runs both and redraws the figures and these tables.) Each
 level's time is the wall time and the process's CPU time (every thread's), its mesh's making
@@ -97,19 +96,18 @@ echo "![The bands' mean pressure against the mean edge, with its estimate](figur
 cat <<'MD'
 
 How fine must a stocking's mesh be for B, C and G to be within 1% of the extrapolated value?
-All three bands converge monotonically, B and G at about the order of linear triangles (2.4),
-C at about first order on changes that stay small (0.5% from the coarsest level to the
-limit). By the observed orders, C is within 1% on every mesh, G from a mean edge of about
-12.8 mm (about 1500 vertices) and B from about 9.3 mm (about 2800 vertices); the 2736-vertex
-mesh of the study below (`Garment/Mesh scale = 0.71`, mean edge 9.4 mm) measured all three
-within 0.6% of these estimates. So a stocking needs about 2800 vertices, a mean edge of 9 mm,
-for its bands to be within 1%; the case's own mesh (1312 vertices, 13.5 mm) reads B 2.4%,
-G 1.1% and C 0.5% low. The finest level's GCI is 0.11% (B), 0.14% (C) and 0.05% (G). The
-whole study took 160 s of CPU, 144 s of it the finest level.
+All three bands converge monotonically, B and G at about the order of linear triangles (2.2
+and 2.5), C at below first order on changes that stay small (0.6% from the coarsest level to
+the limit). By the observed orders, C is within 1% on every mesh, G from a mean edge of about
+13 mm (about 1400 vertices) and B from about 9.2 mm (about 2850 vertices). So a stocking needs
+about 2850 vertices, a mean edge of 9 mm, for its bands to be within 1%; the case's own mesh
+(1312 vertices, 13.5 mm) reads B 2.3%, G 1.1% and C 0.7% low. The finest level's GCI is 0.14%
+(B), 0.30% (C) and 0.04% (G). The whole study took 108 s of CPU on mass spring, 93 s of it the
+finest level, and 85 s on FE.
 
 The landmark-cut stocking (`cases/stocking_female_landmarks.prm`, the same command with
 `--levels 2`, 19 s of CPU) moves by as much from its own mesh (1280 vertices) to 5120: B +1.85%,
-C +0.10%, G +0.85% (this stocking: +2.01%, +0.29%, +0.94%), so the same mesh serves it.
+C +0.10%, G +0.85% (this stocking: +1.83%, +0.25%, +0.87%), so the same mesh serves it.
 
 The same study on a mesh body whose answer is known
 (`tests/cases/test_region_convergence_on_body.cc`): garment T held round a smooth 48-sided prism
@@ -118,19 +116,20 @@ observed order is 2.05, its Richardson estimate 1.1e-5 from the closed form, and
 level 7.74e-4 low, where the inscribed hoop predicts 7.71e-4.
 
 The whole garment's mean pressure (the first table the command prints) converges more slowly:
-observed order 0.67, its finest level 1.8% below its estimate (GCI 2.3%). Quote the bands.
+observed order 0.81, its finest level 1.5% below its estimate (GCI 1.8%). Quote the bands.
 
 The peaks do not converge, and the study fits no order to B's and G's: B's largest vertex
-pressure falls from 11.7 to 8.6 kPa and rises to 8.9 kPa, G's falls from 2090 to 2076 Pa and
-rises to 2441 Pa (single vertices at the ankle's tendons and over the thigh, where each mesh
-resolves the body's curvature differently). C's rises monotonically, 3327, 3535, 3655 Pa, at an
-observed order of 0.79 whose estimate (3819 Pa, GCI 5.6%) would need about 900 000 vertices to
-be within 1%: a peak that grows as the mesh resolves a curvature has no mesh-independent
-value. The bands' means are the numbers to quote.
+pressure falls from 11.2 to 8.4 kPa and rises to 8.8 kPa, G's falls from 2156 to 2151 Pa and
+rises to 2307 Pa (single vertices at the ankle's tendons and over the thigh, where each mesh
+resolves the body's curvature differently). C's rises monotonically, 3330, 3557, 3673 Pa, at an
+observed order of 0.96 whose estimate (3794 Pa, GCI 4.1%) lies 3% above the finest level: a
+peak that grows as the mesh resolves a curvature has no mesh-independent value. The bands'
+means are the numbers to quote.
 
 The settle's stop rule: the implicit route meets the default `Solver/Relative tolerance = 1e-4`
-on every level. RK4 (the case's integrator) stalls at three times it on the 2736-vertex level
-of the study below (2.1e-5 N against 6.8e-6 N, after 12 000 frames, on a vertex over the shin);
+on every level. In the study below (measured with the tube on the earlier axis of the case, the
+line through the centroids of the leg's horizontal sections, 2.8 mm lower at B), RK4 (the case's
+integrator) stalls at three times it on the 2736-vertex level (2.1e-5 N against 6.8e-6 N, after 12 000 frames, on a vertex over the shin);
 at 5e-4 (`--set "Solver/Relative tolerance=5e-4"` in place of the integrator) it settles the
 three levels in 391 s of CPU, its means within 0.02% of the implicit route's (B 3438.9, C
 1694.2, G 903.4 Pa at 21760 vertices); on the 1312 mesh, which settles either way, the looser
@@ -138,7 +137,7 @@ rule moves the means of B, C and G by at most 1.1e-6 of their value.
 
 A coarser level cannot read the bands: at `Garment/Mesh scale = 2` (336 vertices, mean edge
 2.7 cm) both backends settle ([stocking.md](stocking.md), "The coarse stocking": B, C and G
-3.4 %, 2.7 % and 3.0 % below the 1312 mesh), but its warp edge (3 cm) is wider than a band
+3.1 %, 2.9 % and 2.8 % below the 1312 mesh), but its warp edge (3 cm) is wider than a band
 (2 cm), which holds one ring of vertices or none; the study leaves it out.
 MD
 echo
@@ -148,24 +147,13 @@ if grep -q '^fem,' "$figures/stocking_convergence_regions_summary.csv"; then
 fi
 cat <<'MD'
 
-The FE backend on the case's own mesh (level 0: 51 Newton iterations in 4 contact rounds, 4.8 s
-of CPU) reads B 3357.97, C 1687.04 and G 893.36 Pa, the mass-spring backend's to 2e-5. Its
-finer levels are slow, and the time goes to the body, not to the linear solves: on the
-5120-vertex level half of the CPU time is the smooth contact surface's blend
-(`BlendedQuadricField::evaluate`, perf on the running study), 4% the faceted closest point,
-3% the membrane's assembly and 1-2% MUMPS. With the case's 60 Newton iterations a round, that
-level stops in its first round (19.6 s of CPU), the residual falling from 0.78 N to 0.019 N
-while jumping to several newtons between (the largest residuals of each window of 20
-iterations: 12.2, 9.4 and 5.5 N), the largest at the end 1.07 N along the body's normal on a
-vertex at the tube's top (z = -0.13 m, above G), 46 micrometres inside the body; with 300 a
-round, Newton reaches 1.8e-5 N by iteration 60 of the first round and stalls there for the
-other 240 (1.96e-5 N at the end, 5.5 times the stop rule's 3.5e-6 N; line-search steps of
-1/128 to 1/1024), the largest residual 1.7e-5 N, mostly along the body's normal, on a vertex at
-the ankle (z = -0.704 m, in B) 10 micrometres inside the body: the smooth surface's contact
-force that jumps under nanometre displacements ([backends.md](backends.md), "On a mesh body").
-The study stopped there after 530 s of CPU (the 1312 level 4.8 s), so the FE backend has no
-study of its own: on the case's own mesh it reads the mass-spring backend's bands, and the
-mass-spring study above is the stocking's.
+The FE backend, every solver entry at its default, settles every level: 26, 34 and 46 Newton
+iterations (2.1, 11 and 72 s of CPU), and its bands lie within 3e-5 of the mass-spring
+backend's on each level (B 3449.65 against 3449.57 Pa at 21760 vertices), so its orders,
+estimates and the mesh each band needs are the mass-spring study's. The time of its finer
+levels goes to the body, not to the linear solves: on the 5120-vertex level half of the CPU
+time is the smooth contact surface's blend (`BlendedQuadricField::evaluate`, perf on a running
+study), 4% the faceted closest point, 3% the membrane's assembly and 1-2% MUMPS.
 MD
 if [[ -s $figures/stocking_convergence_sqrt2_regions_summary.csv ]]; then
   cat <<'MD'
@@ -173,8 +161,10 @@ if [[ -s $figures/stocking_convergence_sqrt2_regions_summary.csv ]]; then
 ### The edge divided by sqrt(2) (mass spring)
 
 With the edge lengths divided by sqrt(2) from one level to the next (`--ratio 1.41421356`,
-`scripts/stocking-convergence.sh --sqrt2`; 70 s of CPU): at 2736 vertices B, C and G lie 0.33%,
-0.24% and 0.51% below the estimates above, within 1% as predicted. Between 2736 and 5120
+`scripts/stocking-convergence.sh --sqrt2`; 70 s of CPU), measured with the tube on the case's
+earlier axis (the line through the centroids of the leg's horizontal sections, 2.8 mm lower at
+B; the halving study on that axis estimated B 3441.4, C 1696.1 and G 903.6 Pa): at 2736
+vertices B, C and G lie 0.33%, 0.24% and 0.51% below those estimates, within 1% as predicted. Between 2736 and 5120
 vertices B and C move by 0.1% and 0.01% against the trend (the band's rings of vertices and
 the share of their cells inside it change from mesh to mesh), so from these three levels alone
 the study observes no order for them:
