@@ -31,7 +31,7 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
     std::ostringstream message;
     message << "on the coarse mesh (" << section << "/Coarse edge length " << coarse_m
             << " m): " << error.what();
-    throw SolverError(error.reason(), message.str());
+    throw SolverError(error.reason(), message.str(), error.failure());
   }
   std::vector<Vec3> coarse_x = dressed->start_positions_m;
   if (settle_rule.relative_tolerance > 0) {
