@@ -312,6 +312,19 @@ void declare_stop_rule(ParameterHandler& prm) {
                     "above 0. auto: 3e-3 on a body mesh with Body/Mesh/Contact surface = faceted "
                     "(with the rms norm: the chatter of a few vertices on the flat faces stays "
                     "near 1e-3 of the tension scale), 1e-4 elsewhere.");
+  prm.declare_entry("Contact load tolerance", "auto", Patterns::Anything(),
+                    "The stop rule measured also against the step's own contact load, "
+                    "dimensionless: a state is stable when its residual is also below this "
+                    "times the mean normal contact force F on a vertex in contact (N), but never "
+                    "asked below a tenth of the Relative tolerance rule: threshold = min(e Y h^2 "
+                    "/ L, max(0.1 e Y h^2 / L, c F)). A residual r on a vertex in contact errs "
+                    "its contact force by up to r, so the mean pressure over the contact errs by "
+                    "at most r / F of itself: c bounds the pressure error relative to the "
+                    "pressure where the tension-scale rule alone, at a small strain and a small "
+                    "contact load, would leave it at 1e-3 (docs/backends.md, 'The stop rule at "
+                    "the contact load'). 0: off. auto: 0 on a body mesh with Body/Mesh/Contact "
+                    "surface = faceted (its rule is loosened for the chatter on the flat faces), "
+                    "1e-4 elsewhere.");
   prm.declare_entry("Stop norm", "auto", Patterns::Selection("auto|largest|rms"),
                     "Which size of the residual force field the stop rule (Relative tolerance) "
                     "and the mass-spring stall test read. 'largest': the largest residual on any "
@@ -362,11 +375,14 @@ StopRule parse_stop_rule(ParameterHandler& prm) {
   rule.faceted_body = faceted_mesh_body(prm);
   prm.enter_subsection("Solver");
   const std::string tolerance = prm.get("Relative tolerance");
+  const std::string load_tolerance = prm.get("Contact load tolerance");
   const std::string norm = prm.get("Stop norm");
   const std::string gap = prm.get("Gap tolerance");
   prm.leave_subsection();
   rule.relative_tolerance = auto_or_number(tolerance, "Solver/Relative tolerance")
                                 .value_or(rule.faceted_body ? 3e-3 : 1e-4);
+  rule.contact_load_tolerance = auto_or_number(load_tolerance, "Solver/Contact load tolerance")
+                                    .value_or(rule.faceted_body ? 0.0 : 1e-4);
   rule.norm =
       norm == "rms" || (norm == "auto" && rule.faceted_body) ? StopNorm::rms : StopNorm::largest;
   const std::optional<double> gap_m = auto_or_number(gap, "Solver/Gap tolerance");

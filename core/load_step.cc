@@ -13,8 +13,16 @@ void StopRule::validate(bool zero_tolerance_allowed) const {
     throw std::invalid_argument(
         std::string("Solver/Relative tolerance must be in ") +
         (zero_tolerance_allowed ? "[0, 1)" : "(0, 1) for the mass-spring backend"));
+  if (!(contact_load_tolerance >= 0 && contact_load_tolerance < 1))
+    throw std::invalid_argument("Solver/Contact load tolerance must be in [0, 1)");
   if (!(gap_tolerance_m > 0))
     throw std::invalid_argument("Solver/Gap tolerance must be positive (m)");
+}
+
+double StopRule::threshold_N(double rule_N, double contact_force_sum_N, long n_in_contact) const {
+  if (!(contact_load_tolerance > 0) || n_in_contact <= 0) return rule_N;
+  const double load_rule_N = contact_load_tolerance * contact_force_sum_N / double(n_in_contact);
+  return std::min(rule_N, std::max(contact_load_floor * rule_N, load_rule_N));
 }
 
 double StopRule::resolvable_gap_m(double mean_rest_edge_m, double rest_area_m2) const {

@@ -19,6 +19,9 @@ struct StopRule {
   // 'Finite elements/Residual tolerance'.
   double relative_tolerance = 1e-4;
   StopNorm norm = StopNorm::largest;
+  // The rule measured also against the step's own contact load: the residual must be below this
+  // times the mean contact force on a vertex in contact as well (threshold_N); 0: off.
+  double contact_load_tolerance = 1e-4;
   // Largest penetration of a vertex in contact at a finished step with multiplier updates, m.
   double gap_tolerance_m = 1e-8;
   // Solver/Gap tolerance = auto on a body mesh (Body/Kind = mesh or morph): gap_tolerance_m is
@@ -29,6 +32,22 @@ struct StopRule {
   // the entries left at auto, here and in a backend's subsection, take their values for it
   // (the mass-spring settle's in massspring/massspring_parameters.h).
   bool faceted_body = false;
+
+  // The contact-load rule never asks for less than this fraction of the backend's rule: a
+  // vertex that first touches carries a force near zero, and a settle asked for a residual near
+  // zero would run for ever (docs/backends.md, "The stop rule at the contact load").
+  static constexpr double contact_load_floor = 0.1;
+
+  // The threshold a state's residual must be below, N: `rule_N`, the backend's rule force (the
+  // tension-scale rule's relative_tolerance Y h^2 / L; the FE backend's, the tighter of that and
+  // its own), tightened to contact_load_tolerance times the mean contact force on a vertex in
+  // contact, F = contact_force_sum_N / n_in_contact, but not below contact_load_floor rule_N:
+  //   threshold = min(rule_N, max(contact_load_floor rule_N, contact_load_tolerance F)).
+  // A residual r on a vertex in contact is an error of up to r in its contact force, so the
+  // mean pressure over the vertices in contact errs by at most r / F of itself (largest norm):
+  // the pressure error is bounded relative to the pressure, not only the strain error. rule_N
+  // alone without contact or with the rule off.
+  double threshold_N(double rule_N, double contact_force_sum_N, long n_in_contact) const;
 
   // Throws std::invalid_argument naming the Solver entry when a value is out of range;
   // `zero_tolerance_allowed` for a backend with a rule of its own at 0.

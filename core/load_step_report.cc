@@ -10,6 +10,7 @@ void write_step_header(const std::string& backend, const LoadStep& step, double 
   report.step_index = step.index;
   report.alpha = step.alpha;
   report.tolerance_N = tolerance_N;
+  report.load_tolerance_N = tolerance_N;  // until a backend reads the contact load
   report.stop_norm = norm;
 }
 

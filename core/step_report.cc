@@ -106,6 +106,7 @@ std::string StepReport::text() const {
   if (has_newton) write_newton(out, newton);
   out << "; residual " << residual_N << " N, stop rule " << tolerance_N << " N ("
       << to_string(stop_norm) << ")";
+  if (load_tolerance_N < tolerance_N) out << ", " << load_tolerance_N << " N at the contact load";
   if (net_force_read) {
     out << ", net force on the garment " << net_force_N.norm() << " N (" << net_force_N.x() << ", "
         << net_force_N.y() << ", " << net_force_N.z() << ")";

@@ -94,6 +94,10 @@ struct StepReport {
                              // integrator) or Newton iterations (FE), over every round
   double residual_N = 0.0;   // the stop rule's residual at the end
   double tolerance_N = 0.0;  // the stop rule's threshold
+  // The threshold at the end's contact load (StopRule::threshold_N, core/load_step.h): the
+  // tolerance tightened to Solver/Contact load tolerance times the mean contact force on a
+  // vertex in contact; equal to tolerance_N where that is looser, off or out of contact.
+  double load_tolerance_N = 0.0;
   StopNorm stop_norm = StopNorm::largest;
   std::vector<MultiplierRound> rounds;  // one per solve at fixed multipliers
   int multiplier_updates = 0;           // contact multiplier updates done

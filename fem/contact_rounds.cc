@@ -105,6 +105,42 @@ double ContactRounds::update_multipliers(const DofVector& x, int* n_active) {
   return max_penetration_m_;
 }
 
+double ContactRounds::load_threshold_N(const NewtonSolver& newton, const DofVector& x) const {
+  double load_N = 0.0;
+  long n_in_contact = 0;
+  for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
+    const SurfacePoint s =
+        nodes_.query(*problem_.body, k, pattern_.node_position(x, pattern_.owned_nodes()[k]));
+    const double lambda_N = contact_multiplier_N(nodes_.multiplier_N[k], nodes_.penalty_N_per_m[k],
+                                                 s.signed_distance_m);
+    load_N += lambda_N;
+    n_in_contact += lambda_N > 0.0;
+  }
+  return parameters_.stop.threshold_N(newton.tolerance_N(),
+                                      dealii::Utilities::MPI::sum(load_N, pattern_.comm()),
+                                      dealii::Utilities::MPI::sum(n_in_contact, pattern_.comm()));
+}
+
+MultiplierRound ContactRounds::settle(const LoadStep& step, NewtonSolver& newton,
+                                      const NewtonSolver::Assembler& assemble, NewtonSystem& system,
+                                      DofVector& x, NewtonLog& log) const {
+  const std::size_t first = log.residual_N.size();
+  MultiplierRound round;
+  // The rule at the start's contact load, then at the load where the solve stopped: the
+  // solves go on while the residual there is above it (the load grows as the garment settles
+  // onto the body; two more solves at most, each starting where the last stopped).
+  newton.set_load_tolerance_N(load_threshold_N(newton, x));
+  round.iterations = newton.solve(step, assemble, system, x, log);
+  for (int pass = 0; pass < 2 && !log.residual_N.empty(); ++pass) {
+    const double threshold_N = load_threshold_N(newton, x);
+    if (!(log.residual_N.back() > threshold_N)) break;
+    newton.set_load_tolerance_N(threshold_N);
+    round.iterations += newton.solve(step, assemble, system, x, log);
+  }
+  round.residual_N.assign(log.residual_N.begin() + first, log.residual_N.end());
+  return round;
+}
+
 void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
                           const NewtonSolver::Assembler& assemble, NewtonSystem& system,
                           DofVector& x, NewtonLog& log, StepReport& report) {
@@ -120,13 +156,7 @@ void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
   // force the state just solved is in equilibrium with once updated: no settle after the last
   // update.
   MultiplierRounds rounds;
-  rounds.settle = [&] {
-    const std::size_t first = log.residual_N.size();
-    MultiplierRound round;
-    round.iterations = newton.solve(step, assemble, system, x, log);
-    round.residual_N.assign(log.residual_N.begin() + first, log.residual_N.end());
-    return round;
-  };
+  rounds.settle = [&] { return settle(step, newton, assemble, system, x, log); };
   rounds.read_gap = [&](bool, int* count) { return update_multipliers(x, count); };
   rounds.max_updates = parameters_.max_augmented_lagrangian_iterations;
   rounds.gap_tolerance_m = parameters_.stop.gap_tolerance_m;
@@ -135,6 +165,7 @@ void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
   report.iterations = 0;
   for (const MultiplierRound& round : report.rounds) report.iterations += round.iterations;
   const double residual_N = log.residual_N.empty() ? 0.0 : log.residual_N.back();
+  report.load_tolerance_N = load_threshold_N(newton, x);
   if (!closed)
     throw_step_failure(StopReason::gap_not_closed, step,
                        gap_not_closed_text(report, parameters_.stop.gap_tolerance_m), residual_N,

@@ -58,6 +58,13 @@ class ContactRounds {
   // Uzawa's update at this rank's nodes; returns the largest penetration of a node in contact
   // over every rank, m, and counts those nodes into `n_active` (every rank's).
   double update_multipliers(const DofVector& x, int* n_active);
+  // The stop rule's threshold at x's contact load (StopRule::threshold_N, core/load_step.h):
+  // the normal forces max(0, lambda - k g) of every rank's nodes in contact, N.
+  double load_threshold_N(const NewtonSolver& newton, const DofVector& x) const;
+  // Newton at fixed multipliers to the stop rule at the contact load where it stops.
+  MultiplierRound settle(const LoadStep& step, NewtonSolver& newton,
+                         const NewtonSolver::Assembler& assemble, NewtonSystem& system,
+                         DofVector& x, NewtonLog& log) const;
   // Keeps each node's anchor of the accepted state x (after update_multipliers, whose
   // multipliers are the normal forces x was in equilibrium with) and its friction force.
   void commit_friction(const DofVector& x);

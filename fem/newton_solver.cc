@@ -185,7 +185,7 @@ void NewtonSolver::ghosted_increment(NewtonSystem& system, DofVector& increment)
 // costs one assembly and one solve.
 int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system,
                         DofVector& x, NewtonLog& log) {
-  const double tolerance = tolerance_N();
+  const double tolerance = std::min(tolerance_N(), load_tolerance_N_);
   const double mean_edge_m = pattern_.mean_edge_m();
   std::vector<double>& history_N = log.residual_N;
   assemble(x, true);

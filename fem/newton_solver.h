@@ -64,8 +64,12 @@ class NewtonSolver {
   // The shared stop rule's force, Solver/Relative tolerance times the tension scale, N (the
   // FE backend's own rule when that is off): the residual both backends accept.
   double shared_tolerance_N() const { return shared_tolerance_N_; }
+  // The stop rule at the step's contact load (StopRule::threshold_N, core/load_step.h): the
+  // solves that follow stop below the tighter of it and tolerance_N(); start_step() forgets it.
+  void set_load_tolerance_N(double threshold_N) { load_tolerance_N_ = threshold_N; }
   // Forgets the tangent's shift of earlier steps (call at the start of a load step).
   void start_step() {
+    load_tolerance_N_ = tolerance_N_;
     shift_N_per_m_ = 0.0;
     step_cut_ = false;
     first_solve_ = true;
@@ -122,6 +126,7 @@ class NewtonSolver {
   double stiffness_scale_N_per_m_;
   double tolerance_N_;
   double shared_tolerance_N_;
+  double load_tolerance_N_ = tolerance_N_;
   const RigidBody* body_;
   MPI_Comm comm_;
   std::unique_ptr<PetscLinearSolver> linear_solver_;

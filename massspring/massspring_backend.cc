@@ -76,6 +76,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   clearance_m_.assign(n, 0.0);
   damper_direction_.assign(n, Vec3::Zero());
   multiplier_change_N_.assign(n, 0.0);
+  normal_force_N_.assign(n, 0.0);
   carry_contact_ = problem_.body && problem_.body->costly_queries() && !friction_.active();
   carried_contact_.assign(n, CarriedContact{});
   if (parameters_.contact_normal_damping_ratio > 0 && problem_.body)
@@ -129,6 +130,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   stick_normal_[i] = Vec3::Zero();
   // Out of reach the force is zero, and an update would take the multiplier to zero.
   multiplier_change_N_[i] = multiplier_N_[i];
+  normal_force_N_[i] = 0.0;
   CarriedContact& carry = carried_contact_[i];
   if (!carried) carry.valid = false;
   if ((x - asked_at_m_[i]).norm() < 0.5 * (clearance_m_[i] - multiplier_N_[i] / penalty_N_per_m))
@@ -160,6 +162,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   const double lambda_N =
       contact_multiplier_N(multiplier_N_[i], penalty_N_per_m, s.signed_distance_m);
   multiplier_change_N_[i] = std::abs(lambda_N - multiplier_N_[i]);
+  normal_force_N_[i] = lambda_N;
   Vec3 f = lambda_N * s.outward_normal;
   if (lambda_N > 0.0) damper_direction_[i] = s.gap_gradient;
   if (friction_.active() && lambda_N > 0.0) {
@@ -206,11 +209,15 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   ResidualSize size;  // the stop rule's size of the field (core/load_step.h)
   Vec3 net_N = Vec3::Zero();
   largest_multiplier_change_N_ = 0.0;
+  double contact_load_N = 0.0;  // the normal contact forces' sum, over n_in_contact vertices
+  long n_in_contact = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (body && k > 0) {
       force[i] += contact_force_N(i, x[i], nullptr, carried);
       largest_multiplier_change_N_ =
           std::max(largest_multiplier_change_N_, multiplier_change_N_[i]);
+      contact_load_N += normal_force_N_[i];
+      n_in_contact += normal_force_N_[i] > 0.0;
     }
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
@@ -223,7 +230,11 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     size = ResidualSize();
     for (const Vec3& f : force) size.add(f.norm());
   }
-  const double norm_N = size.read(parameters_.stop.norm, double(n));
+  // The rule at this state's contact load (core/load_step.h), the norm scaled onto tolerance_N_:
+  // norm < threshold reads as scaled norm < tolerance_N_.
+  stop_threshold_N_ = parameters_.stop.threshold_N(tolerance_N_, contact_load_N, n_in_contact);
+  double norm_N = size.read(parameters_.stop.norm, double(n));
+  if (stop_threshold_N_ < tolerance_N_) norm_N *= tolerance_N_ / stop_threshold_N_;
   if (std::isnan(norm_N)) return norm_N;  // a force not finite
   if (!(net_force_limit_N_ > 0)) return norm_N;
   // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
@@ -660,7 +671,12 @@ void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) 
   write_step_header("mass spring", step, tolerance_N_, parameters_.stop.norm, report);
   report.stop_reason = StopReason::converged;
   report.iterations = report.flat_start.frames + run.frame;
-  report.residual_N = run.residual_N;
+  // The residual in newtons again (residual_forces scales it onto tolerance_N_), and the
+  // threshold it met at the end's contact load (read by residual_forces above).
+  report.load_tolerance_N = stop_threshold_N_;
+  report.residual_N = stop_threshold_N_ < tolerance_N_
+                          ? run.residual_N * stop_threshold_N_ / tolerance_N_
+                          : run.residual_N;
   if (implicit) {
     report.has_newton = true;
     report.newton.first_pseudo_time_step_s = 1.0 / damping_per_s_;

@@ -64,7 +64,9 @@ class MassSpringBackend final : public Backend {
   // magnitude or the root mean square), N (NaN when one is not finite). With a Net force
   // tolerance, the net force's share of it: max(norm, |sum f| x tolerance / net limit), so
   // one comparison with the tolerance asks both. `carried`: a later stage of an RK4 frame
-  // (contact_force_N).
+  // (contact_force_N). With the contact-load rule (StopRule::threshold_N), the size is scaled
+  // onto the tension-scale rule, norm x tolerance_N_ / threshold, the threshold at x kept in
+  // stop_threshold_N_, so the comparisons with tolerance_N_ and the settles' stops read it.
   double residual_forces(const std::vector<Vec3>& x, bool gravity_on, std::vector<Vec3>& force,
                          bool carried = false) const;
   // The net force on the garment (the sum of `force`), N, and the limit the stop rule puts on
@@ -225,6 +227,11 @@ class MassSpringBackend final : public Backend {
   // update (which meets the stop rule itself).
   mutable std::vector<double> multiplier_change_N_;
   mutable double largest_multiplier_change_N_ = 0.0;
+  // The normal contact force lambda on each particle at its last evaluation, N (0: not in
+  // contact), and the stop rule's threshold at the contact load of the last residual
+  // (StopRule::threshold_N), N.
+  mutable std::vector<double> normal_force_N_;
+  mutable double stop_threshold_N_ = 0.0;
   bool final_settle_next_ = true;
   // The residual below which the current settle stops, N.
   double settle_tolerance_N() const;
