@@ -18,6 +18,8 @@ SettledGarment MassSpringDressingStage::settle(const Problem& problem,
   MassSpringParameters parameters;
   parameters.stop.norm = StopNorm::rms;
   parameters.stop.relative_tolerance = rule.relative_tolerance;
+  // A quick settle that carries positions, not pressures: the tension-scale rule alone.
+  parameters.stop.contact_load_tolerance = 0.0;
   parameters.net_force_tolerance = rule.net_force_tolerance;
   parameters.slide_damping_per_s = rule.slide_damping_per_s;
   parameters.contact_updates = 0;
