@@ -56,7 +56,8 @@ TEST_P(TubeOnGrowingCylinder, MeanPressureMatchesEq7) {
         GetParam().name, alpha, expected, 100 * error, spread, 100 * voronoi_error,
         report.iterations, report.wall_seconds);
     EXPECT_EQ(p.contact_fraction, 1.0) << "every vertex of a stretched tube touches";
-    // The stop rule leaves at most 1e-4 Y h^2 / L on a vertex, 1.4e-4 of its contact force:
+    // The stop rule leaves at most 1e-4 Y h^2 / L on a vertex, 1.4e-4 of its contact force,
+    // and at alpha 1.2 at most 1e-4 of it (the rule at the contact load, core/load_step.h):
     // the margin round the measured error. The sign is the polygon's.
     EXPECT_LT(error, 0.0) << "alpha " << alpha;
     EXPECT_NEAR(error, measured, 1.4e-4) << "alpha " << alpha;
@@ -83,7 +84,7 @@ TEST(MixedVoronoiArea, SumsToTheMeshArea) {
 INSTANTIATE_TEST_SUITE_P(
     PapersGarments, TubeOnGrowingCylinder,
     ::testing::Values(GarmentCase{"4 5T", 0.1878, {-4.72e-3, -2.29e-3, -1.78e-3}},
-                      GarmentCase{"T", 0.157, {-6.29e-3, -3.14e-3, -2.28e-3}}),
+                      GarmentCase{"T", 0.157, {-6.11e-3, -3.14e-3, -2.28e-3}}),
     [](const auto& info) {
       return std::string(info.param.panel_width_m > 0.17 ? "Garment45T" : "GarmentT");
     });
