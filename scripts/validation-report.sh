@@ -184,11 +184,14 @@ residuals of each step's first round, \`ln(r_k+1 / r_k) / ln(r_k / r_k-1)\` (2 f
 Newton's quadratic convergence):
 
 \`\`\`
-$(sed -n '2,4p' "$results/cylinder_T_compare/fem/solver.log" 2>/dev/null | cut -d';' -f1)
+$(sed -n '2,4p' "$results/cylinder_T_compare/fem/solver.log" 2>/dev/null | awk '
+  { split($0, head, ";"); match($0, /rounds \(iterations: residuals N; gap m, in contact\): .*; largest/)
+    print head[1] "; " substr($0, RSTART + 7, RLENGTH - 16) }')
 \`\`\`
 
 $(sed -n '2,4p' "$results/cylinder_T_compare/fem/solver.log" 2>/dev/null | awk '
-  { match($0, /\[[^]]*\]/); n = split(substr($0, RSTART + 1, RLENGTH - 2), r, " ")
+  { match($0, /\[[0-9]+: [^;]*;/); n = split(substr($0, RSTART + 1, RLENGTH - 2), r, " ")
+    for (k = 1; k < n; ++k) r[k] = r[k + 1]; --n
     split($0, head, ":")
     if (n >= 3) printf "- %s: order %.2f from %s, %s, %s N\n", head[1],
       log(r[n] / r[n - 1]) / log(r[n - 1] / r[n - 2]), r[n - 2], r[n - 1], r[n] }')
