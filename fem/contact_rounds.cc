@@ -106,6 +106,13 @@ double ContactRounds::update_multipliers(const DofVector& x, int* n_active) {
 }
 
 double ContactRounds::load_threshold_N(const NewtonSolver& newton, const DofVector& x) const {
+  // The load tightens the shared tension-scale rule, never the backend's own absolute one
+  // (Finite elements/Residual tolerance): where that is below the tightest the load may ask
+  // for, a tenth of the shared rule, the load has nothing to change (the default).
+  const StopRule& rule = parameters_.stop;
+  if (!(rule.relative_tolerance > 0) || !(rule.contact_load_tolerance > 0) ||
+      StopRule::contact_load_floor * newton.shared_tolerance_N() >= newton.tolerance_N())
+    return newton.tolerance_N();
   double load_N = 0.0;
   long n_in_contact = 0;
   for (int k = 0; k < pattern_.n_owned_nodes(); ++k) {
@@ -116,9 +123,10 @@ double ContactRounds::load_threshold_N(const NewtonSolver& newton, const DofVect
     load_N += lambda_N;
     n_in_contact += lambda_N > 0.0;
   }
-  return parameters_.stop.threshold_N(newton.tolerance_N(),
-                                      dealii::Utilities::MPI::sum(load_N, pattern_.comm()),
-                                      dealii::Utilities::MPI::sum(n_in_contact, pattern_.comm()));
+  return std::min(newton.tolerance_N(),
+                  rule.threshold_N(newton.shared_tolerance_N(),
+                                   dealii::Utilities::MPI::sum(load_N, pattern_.comm()),
+                                   dealii::Utilities::MPI::sum(n_in_contact, pattern_.comm())));
 }
 
 MultiplierRound ContactRounds::settle(const LoadStep& step, NewtonSolver& newton,

@@ -59,7 +59,8 @@ class ContactRounds {
   // over every rank, m, and counts those nodes into `n_active` (every rank's).
   double update_multipliers(const DofVector& x, int* n_active);
   // The stop rule's threshold at x's contact load (StopRule::threshold_N, core/load_step.h):
-  // the normal forces max(0, lambda - k g) of every rank's nodes in contact, N.
+  // the shared rule tightened by the normal forces max(0, lambda - k g) of every rank's nodes
+  // in contact, and the backend's own rule, whichever is the tighter, N.
   double load_threshold_N(const NewtonSolver& newton, const DofVector& x) const;
   // Newton at fixed multipliers to the stop rule at the contact load where it stops.
   MultiplierRound settle(const LoadStep& step, NewtonSolver& newton,
