@@ -232,13 +232,16 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   }
   // The rule at this state's contact load (core/load_step.h), the norm scaled onto tolerance_N_:
   // norm < threshold reads as scaled norm < tolerance_N_.
+  // The net force limit tightens in the same ratio: the net force is the residuals' sum, and
+  // over the contact load it is the mean pressure's error too (a light sheet lying on a plane).
   stop_threshold_N_ = parameters_.stop.threshold_N(tolerance_N_, contact_load_N, n_in_contact);
-  double norm_N = size.read(parameters_.stop.norm, double(n));
-  if (stop_threshold_N_ < tolerance_N_) norm_N *= tolerance_N_ / stop_threshold_N_;
+  const double tightening =
+      stop_threshold_N_ < tolerance_N_ ? tolerance_N_ / stop_threshold_N_ : 1.0;
+  const double norm_N = size.read(parameters_.stop.norm, double(n)) * tightening;
   if (std::isnan(norm_N)) return norm_N;  // a force not finite
   if (!(net_force_limit_N_ > 0)) return norm_N;
   // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
-  return std::max(norm_N, net_N.norm() * tolerance_N_ / net_force_limit_N_);
+  return std::max(norm_N, net_N.norm() * tightening * tolerance_N_ / net_force_limit_N_);
 }
 
 Vec3 MassSpringBackend::net_force_N(const std::vector<Vec3>& force) {
@@ -664,7 +667,8 @@ void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) 
   residual_forces(x_, step.gravity_on, force_);
   report.net_force_N = net_force_N(force_);
   report.net_force_read = true;
-  report.net_force_limit_N = net_force_limit_N_;
+  // As tightened at the end's contact load (residual_forces).
+  report.net_force_limit_N = net_force_limit_N_ * std::min(1.0, stop_threshold_N_ / tolerance_N_);
   const int slipping = commit_friction_anchors();
   // How many vertices the committed friction anchors let slide (Coulomb cone reached).
   report.n_slipping = friction_.active() ? slipping : -1;

@@ -65,8 +65,9 @@ class MassSpringBackend final : public Backend {
   // tolerance, the net force's share of it: max(norm, |sum f| x tolerance / net limit), so
   // one comparison with the tolerance asks both. `carried`: a later stage of an RK4 frame
   // (contact_force_N). With the contact-load rule (StopRule::threshold_N), the size is scaled
-  // onto the tension-scale rule, norm x tolerance_N_ / threshold, the threshold at x kept in
-  // stop_threshold_N_, so the comparisons with tolerance_N_ and the settles' stops read it.
+  // onto the tension-scale rule, norm x tolerance_N_ / threshold (and the net force's share in
+  // the same ratio), the threshold at x kept in stop_threshold_N_, so the comparisons with
+  // tolerance_N_ and the settles' stops read it.
   double residual_forces(const std::vector<Vec3>& x, bool gravity_on, std::vector<Vec3>& force,
                          bool carried = false) const;
   // The net force on the garment (the sum of `force`), N, and the limit the stop rule puts on

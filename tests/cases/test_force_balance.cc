@@ -17,10 +17,12 @@
 //                         mass-spring   FE
 //   tube, gravity off     1.1e-12 N     5.0e-13 N   (of 38.9 N pressing)
 //   tube, gravity on      1.9e-4        2.8e-9
-//   sheet, sum            3.1e-3        4.0e-13
-//   sheet, worst vertex   3.1e-3        8.3e-12     (its traction against rho_A g)
-// The mass-spring sheet stops settling while its residual, 1e-4 of the tension scale, is still
-// of the order of its weight per vertex.
+//   sheet, sum            6.6e-3        4.0e-13
+//   sheet, worst vertex   6.6e-3        8.3e-12     (its traction against rho_A g)
+// The mass-spring sheet stops settling while its residual is still of the order of a hundredth
+// of its weight per vertex: the stop rule at the contact load (core/load_step.h) asks for 1e-4
+// of the mean contact force on a vertex, but not below a tenth of the tension-scale rule,
+// 3.39e-6 N here, 9.9e-3 of the mean weight on a vertex (3.43e-4 N): the sheet's bound, 1e-2.
 #include "body_case.h"
 #include "cases/case_parameters.h"
 #include "cases/scenario.h"
@@ -41,7 +43,7 @@ struct Tolerances {
   double tube, sheet;  // relative to the weight
 };
 Tolerances tolerances(const std::string& backend) {
-  return backend == "fem" ? Tolerances{1e-8, 1e-9} : Tolerances{5e-4, 6e-3};
+  return backend == "fem" ? Tolerances{1e-8, 1e-9} : Tolerances{5e-4, 1e-2};
 }
 
 struct Balance {
