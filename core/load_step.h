@@ -38,10 +38,11 @@ struct StopRule {
   // zero would run for ever (docs/backends.md, "The stop rule at the contact load").
   static constexpr double contact_load_floor = 0.1;
 
-  // The threshold a state's residual must be below, N: `rule_N`, the backend's rule force (the
-  // tension-scale rule's relative_tolerance Y h^2 / L; the FE backend's, the tighter of that and
-  // its own), tightened to contact_load_tolerance times the mean contact force on a vertex in
-  // contact, F = contact_force_sum_N / n_in_contact, but not below contact_load_floor rule_N:
+  // The threshold a state's residual must be below, N: `rule_N`, the tension-scale rule's force
+  // relative_tolerance Y h^2 / L (the FE backend then keeps its own absolute rule where that is
+  // the tighter, fem/contact_rounds.cc), tightened to contact_load_tolerance times the mean contact
+  // force on a vertex in contact, F = contact_force_sum_N / n_in_contact, but not below
+  // contact_load_floor rule_N:
   //   threshold = min(rule_N, max(contact_load_floor rule_N, contact_load_tolerance F)).
   // A residual r on a vertex in contact is an error of up to r in its contact force, so the
   // mean pressure over the vertices in contact errs by at most r / F of itself (largest norm):
