@@ -19,9 +19,6 @@ struct StopRule {
   // 'Finite elements/Residual tolerance'.
   double relative_tolerance = 1e-4;
   StopNorm norm = StopNorm::largest;
-  // The rule measured also against the step's own contact load: the residual must be below this
-  // times the mean contact force on a vertex in contact as well (threshold_N); 0: off.
-  double contact_load_tolerance = 1e-4;
   // Largest penetration of a vertex in contact at a finished step with multiplier updates, m.
   double gap_tolerance_m = 1e-8;
   // Solver/Gap tolerance = auto on a body mesh (Body/Kind = mesh or morph): gap_tolerance_m is
@@ -32,6 +29,10 @@ struct StopRule {
   // the entries left at auto, here and in a backend's subsection, take their values for it
   // (the mass-spring settle's in massspring/massspring_parameters.h).
   bool faceted_body = false;
+  // The rule measured also against the step's own contact load: the residual must be below this
+  // times the mean contact force on a vertex in contact as well (threshold_N); 0: off. Declared
+  // last: FemParameters brace-initialises the fields above in order.
+  double contact_load_tolerance = 1e-4;
 
   // The contact-load rule never asks for less than this fraction of the backend's rule: a
   // vertex that first touches carries a force near zero, and a settle asked for a residual near
