@@ -500,9 +500,6 @@ struct MassSpringBackend::StepRun {
   double slide_per_s;  // the slide's damping, 1/s
   // Creep slide damping: a creep seen later may still start a slide (once a step).
   bool may_creep_slide;
-  double creep_s = 0.0;          // how long the step has been seen to creep, s
-  double creep_checked_s = 0.0;  // the step's time at the last look, s
-  double elapsed_s = 0.0;        // the step's simulated time, s
   int slide_start_frame = 0, slide_frames = 0;
   double calm_s = 0.0;
   std::string newton_history;  // implicit: every settle's iterations
@@ -511,13 +508,6 @@ struct MassSpringBackend::StepRun {
   int newton_iterations = 0, newton_stalls = 0;
   bool approached = false;
 };
-
-bool MassSpringBackend::creep_lasts(StepRun& run, double stop_N, double c) const {
-  const double since_s = run.elapsed_s - run.creep_checked_s;
-  run.creep_checked_s = run.elapsed_s;
-  run.creep_s = creeping(stop_N, c) ? run.creep_s + since_s : 0.0;
-  return run.creep_s >= 1.0 / parameters_.creep_slide_damping_per_s;
-}
 
 SolverError MassSpringBackend::step_failure(StopReason reason, const std::string& what,
                                             bool with_history) const {
@@ -643,7 +633,6 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
     if (!std::isfinite(run.residual_N))
       throw step_failure(StopReason::not_finite,
                          "diverged (non-finite force; try a smaller Mass spring/Time step)", false);
-    run.elapsed_s += time_step_s_;
     if (run.sliding) {
       if (!quasi_static && slide_has_ended(time_step_s_, run.slide_per_s, run.calm_s)) {
         run.sliding = false;
@@ -652,24 +641,26 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
       }
     } else if (run.residual_N < stop_N) {
       break;  // rk4_frame left the stable state untouched
-    } else if (run.may_creep_slide && !quasi_static && frame % 100 == 0 &&
-               creep_lasts(run, stop_N, c)) {
-      // A creep (massspring_parameters.h, creep_slide_damping_per_s): the rest of it slides.
-      run.may_creep_slide = false;
-      run.sliding = true;
-      run.slide_per_s = parameters_.creep_slide_damping_per_s;
-      run.slide_start_frame = frame;
-      run.calm_s = 0.0;
     } else if (run.history.record(frame, run.residual_N, time_step_s_)) {
-      if (run.halvings == parameters_.stall_halvings)
-        throw step_failure(StopReason::stalled,
-                           "stalled (the residual did not fall below Mass spring/Stall residual "
-                           "fall times its earlier windows' after " +
-                               std::to_string(run.halvings) + " time step halvings)",
-                           true);
-      time_step_s_ *= 0.5;
-      ++run.halvings;
-      run.history.restart();
+      if (run.may_creep_slide && creeping(stop_N, c)) {
+        // Stalled in a creep (massspring_parameters.h, creep_slide_damping_per_s): the rest of
+        // it slides at the lower damping, and the time step keeps its size.
+        run.may_creep_slide = false;
+        run.sliding = true;
+        run.slide_per_s = parameters_.creep_slide_damping_per_s;
+        run.slide_start_frame = frame;
+        run.calm_s = 0.0;
+      } else {
+        if (run.halvings == parameters_.stall_halvings)
+          throw step_failure(StopReason::stalled,
+                             "stalled (the residual did not fall below Mass spring/Stall "
+                             "residual fall times its earlier windows' after " +
+                                 std::to_string(run.halvings) + " time step halvings)",
+                             true);
+        time_step_s_ *= 0.5;
+        ++run.halvings;
+        run.history.restart();
+      }
     }
     ++frame;
     if (parameters_.time_step_update_frames > 0 && parameters_.time_step_s == 0 &&

@@ -176,9 +176,6 @@ class MassSpringBackend final : public Backend {
   // time step and its halvings, the slide) and what its report says.
   struct StepRun;
   std::unique_ptr<StepRun> run_;
-  // Whether the step has been seen creeping at every look (this one included) for one creep
-  // slide damping time, 1 / c_slide: a short creep is left to end at the step's damping.
-  bool creep_lasts(StepRun& run, double stop_N, double c) const;
   // The named stages of solve().
   void run_flat_start(const LoadStep& step, StepReport& report);
   void prepare_step(const LoadStep& step);

@@ -115,15 +115,16 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "read only after that. A garment creeping down the body under its weight "
                     "slides at a speed the damping sets (docs/dressing.md). 0 = off. RK4 only.");
   prm.declare_entry("Creep slide damping", "auto", Anything(),
-                    "Above 0 (with a Net force tolerance), 1/s: a load step seen to creep (the "
-                    "residual's norm below the stop rule, the net force on the garment above its "
-                    "limit and held for at least half by the damping of the garment's mean "
-                    "velocity) slides at this mass-proportional damping until the slide has ended "
-                    "(as with Slide damping), then settles at Damping again; once per load step, "
-                    "and not in a step that starts sliding (Slide damping above 0). A tight top "
-                    "whose weight friction does not hold where it was dressed slides down to where "
-                    "it is held instead of creeping there at the automatic damping "
-                    "(docs/dressing.md). 0 = off. RK4 only." +
+                    "Above 0 (with a Net force tolerance), 1/s: a load step whose stall test "
+                    "fires while it creeps (the residual's norm below the stop rule, the net force "
+                    "on the garment above its limit and held for at least half by the damping of "
+                    "the garment's mean velocity) slides at this mass-proportional damping instead "
+                    "of halving its time step, until the slide has ended (as with Slide damping), "
+                    "then settles at Damping again; once per load step, and not in a step that "
+                    "starts sliding (Slide damping above 0). A tight top whose weight friction "
+                    "does not hold where it was dressed slides down to where it is held instead "
+                    "of creeping there at the automatic damping (docs/dressing.md). 0 = off. RK4 "
+                    "only." +
                         auto_note(f.creep_slide_damping_per_s, d.creep_slide_damping_per_s));
   prm.declare_entry("Contact normal damping ratio", "auto", Anything(),
                     "Damping ratio zeta of each vertex's penalty contact spring along the body's "

@@ -65,24 +65,40 @@ TEST(SlideDamping, FreeFallFollowsTheClosedFormAtTheSlideDampingAndIsReportedSti
 
 // Mass spring/Creep slide damping: the same free panel, flat at rest (no internal force), with
 // the rms stop rule set so that its residual (each vertex's weight) is met: the net force, the
-// panel's whole weight, is not, so the step is a creep once the automatic damping c_a holds
-// half the weight (c_a M |v| >= M g / 2, reached within a few frames). Once the creep has lasted
-// 1 / c_s the rest of the step slides at c_s: the fall follows the closed form of z'' = -g - c z'
-// with c = c_a to the switch, c = c_s after it; at the frame limit the step ends still sliding.
-// Without the creep slide the same step ends at the frame limit as not converged.
+// panel's whole weight, is not, and the automatic damping c_a holds it (c_a M |v| -> M g within
+// a few frames): a creep, whose residual stays where it is, so the stall test fires. With the
+// creep slide the step then slides at c_s instead of halving its time step: the fall follows the
+// closed form of z'' = -g - c z' with c = c_a to the stall (the frame a run without the creep
+// slide and without halvings stops at, stalled), c = c_s after it, and at the frame limit the
+// step ends still sliding.
 double fall_m(double g, double c, double t, double start_speed) {
   // From downward speed u0: u(t) = g / c + (u0 - g / c) e^(-c t), integrated.
   return g / c * t + (start_speed - g / c) * (1 - std::exp(-c * t)) / c;
 }
 
-TEST(SlideDamping, CreepSlideStartsWhenTheGarmentMovesAsAWholeAndFollowsTheClosedForm) {
+struct Ending {
+  StopReason reason = StopReason::converged;
+  std::string message;
+};
+Ending solve_to_the_end(MassSpringBackend& backend) {
+  Ending end;
+  try {
+    backend.solve(LoadStep{0, 1.0, true});
+  } catch (const SolverError& e) {
+    end.message = e.what();
+    end.reason = e.reason();
+  }
+  return end;
+}
+
+TEST(SlideDamping, CreepSlideStartsAtTheStallOfACreepAndFollowsTheClosedForm) {
   test::PanelProblem panel(0.3, 0.2, MeshSpacing{0.02, 0.02});
   const SimulationMesh& mesh = panel.mesh;
   MassSpringParameters parameters;
   parameters.quasi_static_frames = 0;
   parameters.maximum_frames = 1500;
+  parameters.stall_window_frames = 200;
   parameters.net_force_tolerance = 0.05;
-  parameters.creep_slide_damping_per_s = 30.0;
   parameters.stop.norm = StopNorm::rms;
   // The rms of the vertices' weights m_i g, against which the rule is set twice as large.
   const std::vector<double> mass_kg = MassSpringBackend(panel.problem, parameters).masses_kg();
@@ -93,41 +109,36 @@ TEST(SlideDamping, CreepSlideStartsWhenTheGarmentMovesAsAWholeAndFollowsTheClose
   parameters.stop.relative_tolerance =
       2.0 * rms_weight_N / tension_scale_N(mesh, panel.problem.law->stiffness_scale());
   const std::vector<Vec3> start = test::flat_positions(mesh);
-  for (const bool creep_slide : {true, false}) {
-    MassSpringParameters p = parameters;
-    if (!creep_slide) p.creep_slide_damping_per_s = 0.0;
-    MassSpringBackend backend(panel.problem, p);
-    backend.set_positions(start);
-    StopReason reason = StopReason::converged;
-    std::string message;
-    try {
-      backend.solve(LoadStep{0, 1.0, true});
-    } catch (const SolverError& e) {
-      message = e.what();
-      reason = e.reason();
-    }
-    if (!creep_slide) {
-      EXPECT_EQ(reason, StopReason::iteration_limit) << message;
-      continue;
-    }
-    EXPECT_EQ(reason, StopReason::still_sliding) << message;
-    const double dt = backend.time_step_s(), c_a = backend.damping_per_s();
-    // The creep is seen at every look from frame 100 on (every 100 frames), and the slide
-    // starts at the first look after it has lasted 1 / c_s (frame f: f dt of it).
-    const int switch_frame =
-        100 * std::max(1, int(std::ceil(1.0 / (p.creep_slide_damping_per_s * dt) / 100.0)));
-    const double t_a = (switch_frame + 1) * dt, t_s = (p.maximum_frames - switch_frame - 1) * dt;
-    const double speed_at_switch = g / c_a * (1 - std::exp(-c_a * t_a));
-    const double expected_m = fall_m(g, c_a, t_a, 0.0) + fall_m(g, 30.0, t_s, speed_at_switch);
-    const double fell_m = mean_position(start, backend.masses_kg()).z() -
-                          mean_position(backend.state().positions_m, backend.masses_kg()).z();
-    // RK4's error as in the free fall above; allowed 1e-8 of the fall.
-    EXPECT_NEAR(fell_m, expected_m, 1e-8 * expected_m);
-    std::printf(
-        "creep slide: fell %.10g m, closed form %.10g m (c_a %g 1/s to frame %d, then "
-        "30 1/s)\n",
-        fell_m, expected_m, c_a, switch_frame);
-  }
+
+  // Without the creep slide and without halvings: stalled, at the frame the stall test fires.
+  MassSpringParameters plain = parameters;
+  plain.stall_halvings = 0;
+  MassSpringBackend stalling(panel.problem, plain);
+  stalling.set_positions(start);
+  const Ending stalled = solve_to_the_end(stalling);
+  ASSERT_EQ(stalled.reason, StopReason::stalled) << stalled.message;
+  const std::size_t at = stalled.message.find(" at frame ");
+  ASSERT_NE(at, std::string::npos) << stalled.message;
+  const int stall_frame = std::stoi(stalled.message.substr(at + 10));
+
+  parameters.creep_slide_damping_per_s = 30.0;
+  MassSpringBackend backend(panel.problem, parameters);
+  backend.set_positions(start);
+  const Ending slid = solve_to_the_end(backend);
+  EXPECT_EQ(slid.reason, StopReason::still_sliding) << slid.message;
+  const double dt = backend.time_step_s(), c_a = backend.damping_per_s();
+  const double t_a = (stall_frame + 1) * dt;
+  const double t_s = (parameters.maximum_frames - stall_frame - 1) * dt;
+  const double speed_at_switch = g / c_a * (1 - std::exp(-c_a * t_a));
+  const double expected_m = fall_m(g, c_a, t_a, 0.0) + fall_m(g, 30.0, t_s, speed_at_switch);
+  const double fell_m = mean_position(start, backend.masses_kg()).z() -
+                        mean_position(backend.state().positions_m, backend.masses_kg()).z();
+  // RK4's error as in the free fall above; allowed 1e-8 of the fall.
+  EXPECT_NEAR(fell_m, expected_m, 1e-8 * expected_m);
+  std::printf(
+      "creep slide: fell %.10g m, closed form %.10g m (c_a %g 1/s to frame %d, then "
+      "30 1/s)\n",
+      fell_m, expected_m, c_a, stall_frame);
 }
 
 // The tube on the cylinder at alpha 1.3, settled with and without the slide damping.
