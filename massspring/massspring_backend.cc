@@ -498,7 +498,7 @@ struct MassSpringBackend::StepRun {
   // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
   bool sliding;
   double slide_per_s;  // the slide's damping, 1/s
-  // Creep slide damping: a creep seen later may still start a slide (once a step).
+  // Creep slide damping: a stall in a creep may still start a slide (once a step).
   bool may_creep_slide;
   int slide_start_frame = 0, slide_frames = 0;
   double calm_s = 0.0;
