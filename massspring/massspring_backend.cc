@@ -238,6 +238,10 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   const double tightening =
       stop_threshold_N_ < tolerance_N_ ? tolerance_N_ / stop_threshold_N_ : 1.0;
   const double norm_N = size.read(parameters_.stop.norm, double(n)) * tightening;
+  // The creep test reads the scaled norm and the net force itself (the creep slide is on where
+  // the contact-load rule is off: faceted bodies).
+  residual_norm_N_ = norm_N;
+  residual_net_N_ = net_N.norm();
   if (std::isnan(norm_N)) return norm_N;  // a force not finite
   if (!(net_force_limit_N_ > 0)) return norm_N;
   // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
@@ -271,7 +275,18 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
         const NodalContact contact =
             contact_with_multiplier(c.surface, lambda_N, penalty_N_per_m, true);
         block = contact.stiffness_N_per_m;
-        c.force_N = held_projection(i) * contact.force_N;
+        Vec3 force_N = contact.force_N;
+        if (friction_.active()) {
+          // The friction spring's tangent from the return mapping (contact/coulomb_friction.h),
+          // its symmetric part (CHOLMOD's LL^T): without it a stuck vertex's tangential
+          // stiffness, as large as the contact spring's, is missing from the system and the
+          // Newton steps overshoot across the body.
+          const FrictionResponse r = friction_.response(i, *body, x[i], c.surface, lambda_N,
+                                                        -penalty_N_per_m * c.surface.gap_gradient);
+          block += 0.5 * (r.stiffness_N_per_m + r.stiffness_N_per_m.transpose());
+          force_N += r.force_N;
+        }
+        c.force_N = held_projection(i) * force_N;
       }
       c.block = held_projection(i) * block * held_projection(i);
     }
@@ -396,7 +411,12 @@ double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double
       [&](const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& force) {
         // The residual the stop rule reads is the static one: the damper is added after it.
         // The first stage queries the body; the later ones may carry its answers.
-        const double r = residual_forces(x, gravity_on, force, carry_contact_ && stage++ > 0);
+        const bool first = stage++ == 0;
+        const double r = residual_forces(x, gravity_on, force, carry_contact_ && !first);
+        if (first) {
+          frame_norm_N_ = residual_norm_N_;
+          frame_net_N_ = residual_net_N_;
+        }
         add_contact_damping(v, force);
         return r;
       },
@@ -407,15 +427,26 @@ double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double
   return residual;
 }
 
-bool MassSpringBackend::slide_has_ended(double dt_s, double& calm_s) const {
+Vec3 MassSpringBackend::momentum() const {
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t i = 0; i < v_.size(); ++i) sum += mass_kg_[i] * v_[i];
+  return sum;
+}
+
+bool MassSpringBackend::slide_has_ended(double dt_s, double c, double& calm_s) const {
   // The damping force on the garment's mean velocity: a creep's net force (the part of the
   // weight friction does not hold) balances it, and a chattering vertex moves the mean by
   // only its share of the mass.
-  Vec3 momentum = Vec3::Zero();
-  for (std::size_t i = 0; i < v_.size(); ++i) momentum += mass_kg_[i] * v_[i];
-  const double drag_N = parameters_.slide_damping_per_s * momentum.norm();
+  const double drag_N = c * momentum().norm();
   calm_s = drag_N < 0.5 * net_force_limit_N_ ? calm_s + dt_s : 0.0;
-  return calm_s >= 3.0 / parameters_.slide_damping_per_s;
+  return calm_s >= 3.0 / c;
+}
+
+bool MassSpringBackend::creeping(double stop_N, double c) const {
+  // Each vertex balanced (the norm met) while the garment as a whole is not, and moves at the
+  // speed its damping lets the unbalanced force drive it.
+  return frame_norm_N_ < stop_N && frame_net_N_ >= net_force_limit_N_ &&
+         c * momentum().norm() >= 0.5 * frame_net_N_;
 }
 
 double MassSpringBackend::choose_time_step_s() const {
@@ -469,7 +500,10 @@ double MassSpringBackend::settle_tolerance_N() const {
 struct MassSpringBackend::StepRun {
   StepRun(const MassSpringParameters& p)
       : history(p.stall_window_frames, p.stall_fall),
-        sliding(p.integrator == Integrator::rk4 && p.slide_damping_per_s > 0) {}
+        sliding(p.integrator == Integrator::rk4 && p.slide_damping_per_s > 0),
+        slide_per_s(p.slide_damping_per_s),
+        may_creep_slide(p.integrator == Integrator::rk4 && !sliding &&
+                        p.creep_slide_damping_per_s > 0) {}
   StepClock clock;
   LoadStep step;
   std::vector<Vec3> start_x;
@@ -479,7 +513,10 @@ struct MassSpringBackend::StepRun {
   ResidualHistory history;
   // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
   bool sliding;
-  int slide_frames = 0;
+  double slide_per_s;  // the slide's damping, 1/s
+  // Creep slide damping: a stall in a creep may still start a slide (once a step).
+  bool may_creep_slide;
+  int slide_start_frame = 0, slide_frames = 0;
   double calm_s = 0.0;
   std::string newton_history;  // implicit: every settle's iterations
   // Implicit: Newton iterations (frame counts them and any RK4 frames), whether the approach
@@ -602,9 +639,7 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
     // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
     const bool quasi_static = frame < parameters_.quasi_static_frames;
     if (quasi_static) std::fill(v_.begin(), v_.end(), Vec3::Zero());
-    const double c = quasi_static  ? 0.0
-                     : run.sliding ? parameters_.slide_damping_per_s
-                                   : damping_per_s_;
+    const double c = quasi_static ? 0.0 : run.sliding ? run.slide_per_s : damping_per_s_;
     // While the garment slides the stop rule is not read: at the slide's lower damping a
     // creep shows a smaller net force (massspring_parameters.h).
     // The stop rule, or a round's inexact one (read from the last frame's update sizes).
@@ -615,23 +650,33 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
       throw step_failure(StopReason::not_finite,
                          "diverged (non-finite force; try a smaller Mass spring/Time step)", false);
     if (run.sliding) {
-      if (!quasi_static && slide_has_ended(time_step_s_, run.calm_s)) {
+      if (!quasi_static && slide_has_ended(time_step_s_, run.slide_per_s, run.calm_s)) {
         run.sliding = false;
-        run.slide_frames = frame + 1;
+        run.slide_frames = frame + 1 - run.slide_start_frame;
         run.history.restart();
       }
     } else if (run.residual_N < stop_N) {
       break;  // rk4_frame left the stable state untouched
     } else if (run.history.record(frame, run.residual_N, time_step_s_)) {
-      if (run.halvings == parameters_.stall_halvings)
-        throw step_failure(StopReason::stalled,
-                           "stalled (the residual did not fall below Mass spring/Stall residual "
-                           "fall times its earlier windows' after " +
-                               std::to_string(run.halvings) + " time step halvings)",
-                           true);
-      time_step_s_ *= 0.5;
-      ++run.halvings;
-      run.history.restart();
+      if (run.may_creep_slide && creeping(stop_N, c)) {
+        // Stalled in a creep (massspring_parameters.h, creep_slide_damping_per_s): the rest of
+        // it slides at the lower damping, and the time step keeps its size.
+        run.may_creep_slide = false;
+        run.sliding = true;
+        run.slide_per_s = parameters_.creep_slide_damping_per_s;
+        run.slide_start_frame = frame;
+        run.calm_s = 0.0;
+      } else {
+        if (run.halvings == parameters_.stall_halvings)
+          throw step_failure(StopReason::stalled,
+                             "stalled (the residual did not fall below Mass spring/Stall "
+                             "residual fall times its earlier windows' after " +
+                                 std::to_string(run.halvings) + " time step halvings)",
+                             true);
+        time_step_s_ *= 0.5;
+        ++run.halvings;
+        run.history.restart();
+      }
     }
     ++frame;
     if (parameters_.time_step_update_frames > 0 && parameters_.time_step_s == 0 &&
@@ -688,7 +733,7 @@ void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) 
     report.has_relaxation = true;
     RelaxationReport& r = report.relaxation;
     r.quasi_static_frames = std::min(run.frame, parameters_.quasi_static_frames);
-    r.slide_damping_per_s = parameters_.slide_damping_per_s;
+    r.slide_damping_per_s = run.slide_per_s;
     r.slide_frames = run.slide_frames;
     r.time_step_halvings = run.halvings;
     r.time_step_s = time_step_s_;

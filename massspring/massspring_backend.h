@@ -112,10 +112,16 @@ class MassSpringBackend final : public Backend {
   // the frame's start (its first stage), N; when that is below stop_below_N (or not finite)
   // the state is left untouched.
   double rk4_frame(double dt_s, double damping_per_s, bool gravity_on, double stop_below_N);
-  // Slide damping: `calm_s` (s) grows by dt while the damping force on the garment's mean
-  // velocity, c_slide |sum m_i v_i|, is below half the net force limit, and restarts at 0
-  // otherwise; true once it reaches three slide damping times, 3 / c_slide.
-  bool slide_has_ended(double dt_s, double& calm_s) const;
+  // Slide damping c_slide (1/s): `calm_s` (s) grows by dt while the damping force on the
+  // garment's mean velocity, c_slide |sum m_i v_i|, is below half the net force limit, and
+  // restarts at 0 otherwise; true once it reaches three slide damping times, 3 / c_slide.
+  bool slide_has_ended(double dt_s, double c_slide, double& calm_s) const;
+  // Creep slide damping: whether the last RK4 frame started in a creep (massspring_parameters.h:
+  // the norm below `stop_N`, the net force above its limit and held for at least half by the
+  // damping `c` of the garment's mean velocity).
+  bool creeping(double stop_N, double c) const;
+  // The mass-weighted sum of the velocities, kg m/s.
+  Vec3 momentum() const;
   double choose_time_step_s() const;
   // The largest depth of a vertex in contact at the current state, m; with
   // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact
@@ -233,6 +239,10 @@ class MassSpringBackend final : public Backend {
   // (StopRule::threshold_N), N.
   mutable std::vector<double> normal_force_N_;
   mutable double stop_threshold_N_ = 0.0;
+  // The two parts of the stop rule's size at the last residual_forces, N: the residual's own
+  // norm (Stop norm) and the net force's magnitude; and both at the start of the last RK4 frame.
+  mutable double residual_norm_N_ = 0.0, residual_net_N_ = 0.0;
+  double frame_norm_N_ = 0.0, frame_net_N_ = 0.0;
   bool final_settle_next_ = true;
   // The residual below which the current settle stops, N.
   double settle_tolerance_N() const;

@@ -46,6 +46,7 @@ MassSpringParameters MassSpringParameters::on_faceted_body() {
   p.contact_normal_damping_ratio = 0.5;
   p.time_step_update_frames = 100;
   p.net_force_tolerance = 0.05;
+  p.creep_slide_damping_per_s = 50.0;
   return p;
 }
 
@@ -113,6 +114,18 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "velocity|, below half the net force limit for 3 / (this) s. The stop rule is "
                     "read only after that. A garment creeping down the body under its weight "
                     "slides at a speed the damping sets (docs/dressing.md). 0 = off. RK4 only.");
+  prm.declare_entry("Creep slide damping", "auto", Anything(),
+                    "Above 0 (with a Net force tolerance), 1/s: a load step whose stall test "
+                    "fires while it creeps (the residual's norm below the stop rule, the net force "
+                    "on the garment above its limit and held for at least half by the damping of "
+                    "the garment's mean velocity) slides at this mass-proportional damping instead "
+                    "of halving its time step, until the slide has ended (as with Slide damping), "
+                    "then settles at Damping again; once per load step, and not in a step that "
+                    "starts sliding (Slide damping above 0). A tight top whose weight friction "
+                    "does not hold where it was dressed slides down to where it is held instead "
+                    "of creeping there at the automatic damping (docs/dressing.md). 0 = off. RK4 "
+                    "only." +
+                        auto_note(f.creep_slide_damping_per_s, d.creep_slide_damping_per_s));
   prm.declare_entry("Contact normal damping ratio", "auto", Anything(),
                     "Damping ratio zeta of each vertex's penalty contact spring along the body's "
                     "normal, dimensionless in [0, 1]: a vertex in contact gets -2 zeta sqrt(kA m) "
@@ -220,6 +233,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   const std::string update_frames_text = prm.get("Time step update frames");
   damping_per_s = prm.get_double("Damping");
   slide_damping_per_s = prm.get_double("Slide damping");
+  const std::string creep_slide_text = prm.get("Creep slide damping");
   const std::string contact_damping_text = prm.get("Contact normal damping ratio");
   const std::string stick_damping_text = prm.get("Contact stick damping ratio");
   quasi_static_frames = prm.get_integer("Quasi-static frames");
@@ -243,6 +257,8 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   contact_stick_damping_ratio = auto_or(stick_damping_text, "Contact stick damping ratio",
                                         faceted_body && arranged_from_landmarks ? 0.5 : 0.0);
   net_force_tolerance = auto_or(net_force_text, "Net force tolerance", d.net_force_tolerance);
+  creep_slide_damping_per_s = auto_or(creep_slide_text, "Creep slide damping",
+                                      net_force_tolerance > 0 ? d.creep_slide_damping_per_s : 0.0);
   validate();
 }
 

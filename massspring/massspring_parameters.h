@@ -70,6 +70,17 @@ struct MassSpringParameters {
   // is read only after that (a creep at c_slide shows a net force c / c_slide times smaller).
   // Neither damping enters the stable state. 0: off.
   double slide_damping_per_s = 0.0;
+  // Above 0 (needs a net force tolerance): a load step that does not start sliding (slide
+  // damping 0) and whose stall test fires while it creeps slides at this damping, 1/s, instead of
+  // halving its time step: a creep is the residual's own norm below the stop rule, the net force
+  // on the garment above its limit and held for at least half by the damping of the garment's
+  // mean velocity (m_total c |vbar|: the garment moves as a whole at the speed the damping lets
+  // it). The slide ends as above and the step settles at its damping again; once per load step.
+  // A top whose weight friction does not hold where it was dressed then slides to where it is
+  // held at the lower damping instead of creeping there at the automatic one (docs/dressing.md,
+  // "The creep at the stop"); a step that meets its rule without a stall is left as it was.
+  // 0: off.
+  double creep_slide_damping_per_s = 0.0;
   // Damping ratio zeta of each vertex's contact spring along the body's normal, dimensionless
   // in [0, 1]: a vertex in contact (lambda > 0) gets -2 zeta sqrt(kA m) (v . d) d (kA its
   // penalty stiffness, m its mass, d the gradient of its gap, which on a faceted body is the
@@ -148,7 +159,8 @@ struct MassSpringParameters {
   // chatter in a contact limit cycle: a damper on each contact spring along the face's normal
   // (zeta 0.5) ends it without holding back a slide; the time step chosen again
   // every 100 frames, as a dressed state starts with squashed edges that relax; the net force
-  // on the garment below 5 % of its weight, as the rms alone accepts a garment still sliding.
+  // on the garment below 5 % of its weight, as the rms alone accepts a garment still sliding;
+  // a creep under that rule slides at 50 1/s (creep_slide_damping_per_s).
   static MassSpringParameters on_faceted_body();
 
   static void declare_parameters(dealii::ParameterHandler& prm);

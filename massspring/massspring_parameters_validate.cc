@@ -17,6 +17,9 @@ void MassSpringParameters::validate() const {
   require(slide_damping_per_s >= 0, "Slide damping", "must be >= 0 (1/s; 0 = off)");
   require(slide_damping_per_s == 0 || net_force_tolerance > 0, "Slide damping",
           "needs a Mass spring/Net force tolerance above 0 (the end of the slide is read on it)");
+  require(creep_slide_damping_per_s >= 0, "Creep slide damping", "must be >= 0 (1/s; 0 = off)");
+  require(creep_slide_damping_per_s == 0 || net_force_tolerance > 0, "Creep slide damping",
+          "needs a Mass spring/Net force tolerance above 0 (the creep is read on it)");
   // Up to critical, the contact mode's eigenvalues keep the modulus omega the automatic time
   // step is chosen for (omega (-zeta +- i sqrt(1 - zeta^2))); beyond it one grows as
   // omega (zeta + sqrt(zeta^2 - 1)) and RK4 could leave its stability region.

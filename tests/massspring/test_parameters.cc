@@ -178,6 +178,28 @@ TEST(MassSpringParameters, ContactStickDampingIsOnAtAutoOnlyRoundLimbsOnAFaceted
   }
 }
 
+// The creep slide at auto: 50 1/s on a faceted body mesh with its net force rule, off elsewhere
+// and where the net force rule is turned off (the creep is read on it); a number given wins.
+TEST(MassSpringParameters, CreepSlideIsOnAtAutoOnAFacetedBodyWithANetForceRule) {
+  dealii::ParameterHandler prm;
+  MassSpringParameters::declare_parameters(prm);
+  MassSpringParameters p;
+  p.parse_parameters(prm, true);
+  EXPECT_EQ(p.creep_slide_damping_per_s, 50.0);
+  p.parse_parameters(prm, false);
+  EXPECT_EQ(p.creep_slide_damping_per_s, 0.0);
+  prm.parse_input_from_string("subsection Mass spring\n  set Net force tolerance = 0\nend\n");
+  p.parse_parameters(prm, true);
+  EXPECT_EQ(p.creep_slide_damping_per_s, 0.0);
+  prm.parse_input_from_string(
+      "subsection Mass spring\n  set Net force tolerance = 0.1\n  set Creep slide damping = "
+      "20\nend\n");
+  p.parse_parameters(prm, false);
+  EXPECT_EQ(p.creep_slide_damping_per_s, 20.0);
+  p.creep_slide_damping_per_s = -1;
+  expect_refused_naming(p, "Creep slide damping");
+}
+
 TEST(MassSpringParameters, SlideDampingIsReadAndNeedsANetForceTolerance) {
   dealii::ParameterHandler prm;
   MassSpringParameters::declare_parameters(prm);

@@ -3,12 +3,14 @@
 // ended. The internal forces sum to zero, so a free panel falling under gravity has a mean
 // position obeying z'' = -g - c_s z' (a slide that never ends); a tube on a cylinder settles
 // where it does without it, and one sliding down under its weight ends balanced as a whole.
+#include "core/tension_scale.h"
 #include "massspring/massspring_backend.h"
 #include "test_meshes.h"
 #include "tube_on_cylinder.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -59,6 +61,84 @@ TEST(SlideDamping, FreeFallFollowsTheClosedFormAtTheSlideDampingAndIsReportedSti
   EXPECT_GT(backend.damping_per_s(), 5 * c);
   std::printf("t %g s: fell %.10g m, closed form %.10g m at c_s %g 1/s (automatic c %g 1/s)\n", t,
               fall_m, expected_m, c, backend.damping_per_s());
+}
+
+// Mass spring/Creep slide damping: the same free panel, flat at rest (no internal force), with
+// the rms stop rule set so that its residual (each vertex's weight) is met: the net force, the
+// panel's whole weight, is not, and the automatic damping c_a holds it (c_a M |v| -> M g within
+// a few frames): a creep, whose residual stays where it is, so the stall test fires. With the
+// creep slide the step then slides at c_s instead of halving its time step: the fall follows the
+// closed form of z'' = -g - c z' with c = c_a to the stall (the frame a run without the creep
+// slide and without halvings stops at, stalled), c = c_s after it, and at the frame limit the
+// step ends still sliding.
+double fall_m(double g, double c, double t, double start_speed) {
+  // From downward speed u0: u(t) = g / c + (u0 - g / c) e^(-c t), integrated.
+  return g / c * t + (start_speed - g / c) * (1 - std::exp(-c * t)) / c;
+}
+
+struct Ending {
+  StopReason reason = StopReason::converged;
+  std::string message;
+};
+Ending solve_to_the_end(MassSpringBackend& backend) {
+  Ending end;
+  try {
+    backend.solve(LoadStep{0, 1.0, true});
+  } catch (const SolverError& e) {
+    end.message = e.what();
+    end.reason = e.reason();
+  }
+  return end;
+}
+
+TEST(SlideDamping, CreepSlideStartsAtTheStallOfACreepAndFollowsTheClosedForm) {
+  test::PanelProblem panel(0.3, 0.2, MeshSpacing{0.02, 0.02});
+  const SimulationMesh& mesh = panel.mesh;
+  MassSpringParameters parameters;
+  parameters.quasi_static_frames = 0;
+  parameters.maximum_frames = 1500;
+  parameters.stall_window_frames = 200;
+  parameters.net_force_tolerance = 0.05;
+  parameters.stop.norm = StopNorm::rms;
+  // The rms of the vertices' weights m_i g, against which the rule is set twice as large.
+  const std::vector<double> mass_kg = MassSpringBackend(panel.problem, parameters).masses_kg();
+  double sum_squares = 0.0;
+  const double g = panel.problem.gravity_m_per_s2.norm();
+  for (double m : mass_kg) sum_squares += (m * g) * (m * g);
+  const double rms_weight_N = std::sqrt(sum_squares / double(mass_kg.size()));
+  parameters.stop.relative_tolerance =
+      2.0 * rms_weight_N / tension_scale_N(mesh, panel.problem.law->stiffness_scale());
+  const std::vector<Vec3> start = test::flat_positions(mesh);
+
+  // Without the creep slide and without halvings: stalled, at the frame the stall test fires.
+  MassSpringParameters plain = parameters;
+  plain.stall_halvings = 0;
+  MassSpringBackend stalling(panel.problem, plain);
+  stalling.set_positions(start);
+  const Ending stalled = solve_to_the_end(stalling);
+  ASSERT_EQ(stalled.reason, StopReason::stalled) << stalled.message;
+  const std::size_t at = stalled.message.find(" at frame ");
+  ASSERT_NE(at, std::string::npos) << stalled.message;
+  const int stall_frame = std::stoi(stalled.message.substr(at + 10));
+
+  parameters.creep_slide_damping_per_s = 30.0;
+  MassSpringBackend backend(panel.problem, parameters);
+  backend.set_positions(start);
+  const Ending slid = solve_to_the_end(backend);
+  EXPECT_EQ(slid.reason, StopReason::still_sliding) << slid.message;
+  const double dt = backend.time_step_s(), c_a = backend.damping_per_s();
+  const double t_a = (stall_frame + 1) * dt;
+  const double t_s = (parameters.maximum_frames - stall_frame - 1) * dt;
+  const double speed_at_switch = g / c_a * (1 - std::exp(-c_a * t_a));
+  const double expected_m = fall_m(g, c_a, t_a, 0.0) + fall_m(g, 30.0, t_s, speed_at_switch);
+  const double fell_m = mean_position(start, backend.masses_kg()).z() -
+                        mean_position(backend.state().positions_m, backend.masses_kg()).z();
+  // RK4's error as in the free fall above; allowed 1e-8 of the fall.
+  EXPECT_NEAR(fell_m, expected_m, 1e-8 * expected_m);
+  std::printf(
+      "creep slide: fell %.10g m, closed form %.10g m (c_a %g 1/s to frame %d, then "
+      "30 1/s)\n",
+      fell_m, expected_m, c_a, stall_frame);
 }
 
 // The tube on the cylinder at alpha 1.3, settled with and without the slide damping.
