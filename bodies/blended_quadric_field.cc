@@ -32,6 +32,7 @@ Smoothstep smoothstep(double u) {
 struct Term {
   int vertex;
   int turned;
+  double distance, q;  // |delta| and 1 - r
   double w;
   double d;  // d_i(x), set with dd in the second pass
   double alpha, beta;
@@ -248,6 +249,10 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
   constexpr double screen_width = screen_cosine_in - screen_cosine_out;
   Vec3 v = Vec3::Zero();   // sum u_j n_j
   Mat3 dv = Mat3::Zero();  // its derivative, sum n_j (grad u_j)^T
+  // The first pass finds the terms and the facing normal alone; the weights' derivatives
+  // follow once m tells whether any vertex is partly facing (the facing normal's derivative
+  // dv is needed only then): a query where every vertex faces fully (about half of them over
+  // MakeHuman's female, more on smoother bodies) skips dv's nine products a term.
   for (; listed != listed_end; ++listed) {
     const int i = *listed;
     const Quadric& vertex = quadric[i];
@@ -261,27 +266,30 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
     // lies within a few degrees of m0 wherever the flat surface has an answer (both are the
     // surface's normal), beyond the 120 degrees of the facing factor (F3).
     if (!(r < 1.0 && F.value > 0.0)) continue;
-    // psi(r) = (1-r)^4 (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and
-    // its Hessian -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
     const double q = 1.0 - r;
     Term& t = terms[count++];
     t.vertex = i;
     t.turned = -1;
     t.delta = delta;
+    t.distance = distance;
+    t.q = q;
     t.w = q * q * q * q * (4 * r + 1);
     t.screen = F;
     v += t.w * F.value * vertex.normal;
-    if constexpr (derivatives) {
-      const double over_s2 = vertex.over_support_squared;
-      t.alpha = -20.0 * over_s2 * q * q * q;
-      t.dw = t.alpha * delta;
-      t.beta = distance > 0 ? 60.0 * over_s2 * q * q / (distance * s) : 0.0;
-      t.db = F.value < 1.0 ? Vec3(dm0_dx.transpose() * vertex.normal / screen_width) : Vec3::Zero();
-      dv += vertex.normal * (F.value * t.dw + t.w * F.slope * t.db).transpose();
-    }
   }
   const double length = v.norm();
   if (!(length > 0.0)) return Value{};
+  // The Wendland weight's gradient and Hessian (alpha, beta as Term says), psi(r) = (1-r)^4
+  // (4r+1): psi' = -20 r (1-r)^3, so grad w = -20 (1-r)^3 delta / s^2 and its Hessian
+  // -20/s^2 [(1-r)^3 I - 3 (1-r)^2 delta delta^T / (|delta| s)].
+  const auto weight_derivatives = [&](Term& t) {
+    const Quadric& vertex = quadric[t.vertex];
+    const double s = vertex.support_m, over_s2 = vertex.over_support_squared;
+    const double distance = t.distance, q = t.q;
+    t.alpha = -20.0 * over_s2 * q * q * q;
+    t.dw = t.alpha * t.delta;
+    t.beta = distance > 0 ? 60.0 * over_s2 * q * q / (distance * s) : 0.0;
+  };
   // The facing normal m = v / |v| and dm/dx = (I - m m^T) dv / |v| (eq. F2).
   const Vec3 m = v / length;
   // The second pass: each weight scaled by the facing factor S(a_i), a_i = 2 (n_i . m + 1/2)
@@ -295,29 +303,55 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
   Mat3 dm_dx = Mat3::Zero();
   const double rho = 1.0 / length, rho3 = rho * rho * rho;
   Vec3 dv_v = Vec3::Zero();
-  std::array<Mat3, 3> Q{Mat3::Zero(), Mat3::Zero(), Mat3::Zero()};
-  const auto Q_of = [&](const Vec3& c) -> Mat3 { return c[0] * Q[0] + c[1] * Q[1] + c[2] * Q[2]; };
+  // Q_k in their six distinct entries (each H u_j is symmetric): (0,0) (1,1) (2,2) (0,1) (0,2)
+  // (1,2).
+  double Q[3][6] = {};
+  const auto Q_of = [&](const Vec3& c) -> Mat3 {
+    double e[6];
+    for (int k = 0; k < 6; ++k) e[k] = c[0] * Q[0][k] + c[1] * Q[1][k] + c[2] * Q[2][k];
+    Mat3 matrix;
+    matrix << e[0], e[3], e[4], e[3], e[1], e[5], e[4], e[5], e[2];
+    return matrix;
+  };
   Mat3 H_rho = Mat3::Zero();
-  if constexpr (derivatives) {
+  // Some vertex partly facing (0 < a_i < 1, below): its factor's derivatives need dm/dx.
+  const bool partly_facing = derivatives && std::any_of(terms, terms + count, [&](const Term& t) {
+                               const double a = 2.0 * (quadric[t.vertex].normal.dot(m) + 0.5);
+                               return a > 0.0 && a < 1.0;
+                             });
+  if (partly_facing) {
+    // dv = sum n_j (grad u_j)^T, summed in the first pass's order.
+    for (std::size_t k = 0; k < count; ++k) {
+      Term& t = terms[k];
+      const Smoothstep& F = t.screen;
+      const Vec3& normal = quadric[t.vertex].normal;
+      weight_derivatives(t);
+      t.db = F.value < 1.0 ? Vec3(dm0_dx.transpose() * normal / screen_width) : Vec3::Zero();
+      dv += normal * (F.value * t.dw + t.w * F.slope * t.db).transpose();
+    }
     dm_dx = (Mat3::Identity() - m * m.transpose()) * dv / length;
     dv_v = dv.transpose() * v;
     // Q and H rho from the first pass's weights, before the second pass scales them.
-    if (std::any_of(terms, terms + count, [&](const Term& t) {
-          const double a = 2.0 * (quadric[t.vertex].normal.dot(m) + 0.5);
-          return a > 0.0 && a < 1.0;
-        })) {
-      for (std::size_t k = 0; k < count; ++k) {
-        const Term& j = terms[k];
-        const Smoothstep& F = j.screen;
-        const Mat3 hu =
-            F.value * (j.alpha * Mat3::Identity() + j.beta * j.delta * j.delta.transpose()) +
-            F.slope * (j.dw * j.db.transpose() + j.db * j.dw.transpose()) +
-            j.w * F.curvature * j.db * j.db.transpose();
-        for (int c = 0; c < 3; ++c) Q[c] += quadric[j.vertex].normal[c] * hu;
+    for (std::size_t k = 0; k < count; ++k) {
+      const Term& j = terms[k];
+      const Smoothstep& F = j.screen;
+      // F H w = F (alpha I + beta delta delta^T), and where the screen varies (F < 1, rare)
+      // the terms in F' and F''.
+      const Vec3& d = j.delta;
+      const double fa = F.value * j.alpha, fb = F.value * j.beta;
+      double hu[6] = {fa + fb * d[0] * d[0], fa + fb * d[1] * d[1], fa + fb * d[2] * d[2],
+                      fb * d[0] * d[1],      fb * d[0] * d[2],      fb * d[1] * d[2]};
+      if (F.slope != 0.0 || F.curvature != 0.0) {
+        const Mat3 screened = F.slope * (j.dw * j.db.transpose() + j.db * j.dw.transpose()) +
+                              j.w * F.curvature * j.db * j.db.transpose();
+        hu[0] += screened(0, 0), hu[1] += screened(1, 1), hu[2] += screened(2, 2);
+        hu[3] += screened(0, 1), hu[4] += screened(0, 2), hu[5] += screened(1, 2);
       }
-      H_rho =
-          3 * rho3 * rho * rho * dv_v * dv_v.transpose() - rho3 * (dv.transpose() * dv + Q_of(v));
+      const Vec3& n = quadric[j.vertex].normal;
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 6; ++k) Q[c][k] += n[c] * hu[k];
     }
+    H_rho = 3 * rho3 * rho * rho * dv_v * dv_v.transpose() - rho3 * (dv.transpose() * dv + Q_of(v));
   }
   std::size_t kept = 0;
   for (std::size_t k = 0; k < count; ++k) {
@@ -326,6 +360,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
     const Vec3& n = vertex.normal;
     const double a = 2.0 * (n.dot(m) + 0.5);
     if (!(a > 0.0)) continue;
+    if (derivatives && !partly_facing) weight_derivatives(t);
     if (a < 1.0) {
       // w <- w S(a): grad (w S) = S grad w + w S' grad a, grad a = 2 (dm/dx)^T n_i; its
       // Hessian S H w + S' (grad w grad a^T + grad a grad w^T) + w S'' grad a grad a^T

@@ -122,13 +122,17 @@ SurfacePoint MeshBody::query(const Vec3& x) const {
 }
 
 SurfacePoint MeshBody::query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const {
-  if (near.shape == shape_id_ && (x - near.centre_m).norm() <= near.reach_m)
-    return finished(x, faceted_answer(x, bvh_.closest_among(x, near.faces)), parts, &near);
+  if (near.shape == shape_id_ && (x - near.centre_m).norm() <= near.reach_m) {
+    const TriangleBvh::Hit hit = bvh_.closest_among(x, near.faces, near.last_face);
+    near.last_face = hit.triangle;
+    return finished(x, faceted_answer(x, hit), parts, &near);
+  }
   // For x within r of the centre c, whose closest face is at d from c: x's closest face is no
   // farther from x than c's, d + r, so it lies within d + 2 r of c. (A nanometre more for
   // round-off.)
   const TriangleBvh::Hit hit = bvh_.closest(x);
   near.centre_m = x;
+  near.last_face = hit.triangle;
   near.reach_m = near_reach_m_;
   near.shape = shape_id_;
   bvh_.within(x, (x - hit.point_m).norm() + 2.0 * near_reach_m_ + 1e-9, near.faces);
@@ -139,7 +143,7 @@ SurfacePoint MeshBody::query_parts(const Vec3& x, NearFaces& near, QueryParts pa
 
 SurfacePoint MeshBody::faceted_near(const Vec3& x, const NearFaces* near) const {
   if (near && near->shape == shape_id_ && (x - near->centre_m).norm() <= near->reach_m)
-    return faceted_answer(x, bvh_.closest_among(x, near->faces));
+    return faceted_answer(x, bvh_.closest_among(x, near->faces, near->last_face));
   return faceted_query(x);
 }
 

@@ -46,6 +46,9 @@ struct NearFaces {
   // A mesh body's smooth surface: the vertices whose quadrics can blend at any x within
   // `reach_m` of `centre_m` (BlendedQuadricField::vertices_near), ascending.
   std::vector<int> blend_vertices;
+  // The triangle of the last closest point found from `faces`, where the next search starts
+  // (TriangleBvh::closest_among's hint); -1 before the first.
+  int last_face = -1;
 };
 
 // The parts of a SurfacePoint a caller needs beyond the signed distance, outward normal and

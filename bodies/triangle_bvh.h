@@ -28,8 +28,10 @@ class TriangleBvh {
   // The triangles whose closest point to x lies within `radius_m` of it, into `out` (cleared).
   void within(const Vec3& x_m, double radius_m, std::vector<int>& out) const;
   // The closest point among `triangles` alone (not empty): the same projection as closest(),
-  // so that a list holding closest()'s triangle gives its answer.
-  Hit closest_among(const Vec3& x_m, const std::vector<int>& triangles) const;
+  // so that a list holding closest()'s triangle gives its answer. `hint` (a triangle of the
+  // list, or -1), likely the closest (the last answer's), lets the scan skip the triangles
+  // bounded away from x beyond it; the answer is the same with any hint.
+  Hit closest_among(const Vec3& x_m, const std::vector<int>& triangles, int hint = -1) const;
 
  private:
   struct Tree;

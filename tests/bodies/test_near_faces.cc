@@ -4,6 +4,7 @@
 // kept or move beyond them; a new shape of the body is not answered from the old faces.
 #include "bodies/mesh_body.h"
 #include "bodies/scaled_body.h"
+#include "bodies/triangle_bvh.h"
 
 #include <gtest/gtest.h>
 
@@ -167,6 +168,45 @@ TEST(NearFaces, SmoothSurfaceWarmAnswersAreTheTreesOnJumpsAndTies) {
   EXPECT_LT(worst_gap_m, 1e-12);
   EXPECT_LT(worst_normal, 1e-12);
   EXPECT_LT(worst_rest, 1e-12);
+}
+
+// TriangleBvh::closest_among skips the triangles whose bounding sphere or plane lies beyond
+// its hint's distance: with any hint of the list (the closest triangle, a random one, the first
+// and the last) the answer is that without a hint, the same triangle and the same point to the
+// last bit, on points near the surface and on its vertices and edges, where triangles tie.
+TEST(NearFaces, ClosestAmongGivesTheSameHitWithAnyHint) {
+  const auto body = load_mesh_body(female, {});
+  const TriangleSurface& surface = body->surface();
+  TriangleBvh bvh;
+  bvh.build(surface.vertices_m, surface.triangles);
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> triangle(0, int(surface.triangles.size()) - 1);
+  int points = 0, differing = 0;
+  std::vector<int> kept;
+  for (int k = 0; k < 600; ++k) {
+    const Triangle& t = surface.triangles[triangle(random)];
+    const Vec3 &a = surface.vertices_m[t[0]], &b = surface.vertices_m[t[1]],
+               &c = surface.vertices_m[t[2]];
+    const Vec3 out = body->vertex_normals()[t[0]];
+    const double lift_m = 3e-4 * unit(random);
+    for (const Vec3& x :
+         {Vec3(a + lift_m * out), Vec3(0.5 * (a + b) + lift_m * out),
+          Vec3((a + b + c) / 3.0 + 2e-3 * Vec3(unit(random), unit(random), unit(random)))}) {
+      // The triangles within 3 mm of x, a list such as query_parts keeps.
+      bvh.within(x, 3e-3, kept);
+      if (kept.empty()) continue;
+      ++points;
+      const TriangleBvh::Hit full = bvh.closest_among(x, kept);
+      std::uniform_int_distribution<int> entry(0, int(kept.size()) - 1);
+      for (const int hint : {full.triangle, kept[entry(random)], kept.front(), kept.back()}) {
+        const TriangleBvh::Hit hinted = bvh.closest_among(x, kept, hint);
+        differing += hinted.triangle != full.triangle || hinted.point_m != full.point_m;
+      }
+    }
+  }
+  EXPECT_GT(points, 1500);
+  EXPECT_EQ(differing, 0);
 }
 
 TEST(NearFaces, ScaledBodyAnswersAsItsFreshQuery) {
