@@ -135,7 +135,8 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "fem/contact_set_prediction.h). 0: a step is solved again on its predicted "
                     "set only while the potential judges (up to 5 times, Globalization) and after "
                     "a step the line search cut (once), every other step on the nodes in contact "
-                    "where it starts (docs/backends.md, \"Newton's line search\").");
+                    "where it starts; with friction (Contact/Friction coefficient > 0) every step "
+                    "once (docs/backends.md, \"Newton's line search\").");
   prm.declare_entry(
       "Penalty factor", "100", Double(1e-3, 1e12),
       "Contact penalty k = beta Y / h_k^2 in Pa/m at each node (Y the law's stiffness "
@@ -147,10 +148,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     std::to_string(d.max_augmented_lagrangian_iterations), Integer(1, 1000),
                     "Multiplier updates per load step before the step fails (count).");
   prm.declare_entry("Tangent shift", "0", Double(0, 1e12),
-                    "Added to the tangent's diagonal, N/m, for bodies other than a cylinder "
-                    "whose rigid motions are not pinned, and for fabric hanging slack off the "
-                    "body, whose Newton increments would otherwise reach metres (the tops: 10 "
-                    "N/m, docs/performance.md). It changes the Newton path; the residual is not "
+                    "Added to the tangent's diagonal, N/m, on every Newton system, beside the "
+                    "adaptive Levenberg-Marquardt shift Newton grows where the line search would "
+                    "cut a step below an eighth (docs/backends.md, \"Newton's line search\"; no "
+                    "case needs it). It changes the Newton path; the residual is not "
                     "shifted, so the step still ends at an equilibrium to the stop rule (where "
                     "there are several, as for fabric slipping at friction's limit, not "
                     "necessarily the same one).");

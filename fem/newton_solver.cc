@@ -193,8 +193,10 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
   // The potential judges the first solve of a load step, where the garment travels onto the
   // body; the later rounds start next to the solution, where on a mesh body its minimum is not
   // R = 0 (see kDefectRatio).
-  const bool potential_on =
-      parameters_.line_search && parameters_.potential_globalization && energy_;
+  // With friction there is none (its energy is NaN): ||R|| judges from the start, and the
+  // switch below never sends the solve back to its start (two iterations lost on the tops).
+  const bool potential_on = parameters_.line_search && parameters_.potential_globalization &&
+                            energy_ && std::isfinite(energy_(x));
   bool potential_judges = potential_on && first_solve_ && potential_trusted_;
   first_solve_ = false;
   // Where the load step's first solve starts: it starts again from here, judged by ||R||_2,
