@@ -81,13 +81,13 @@ Problem with_slack_treatment(const Problem& problem, const FemParameters& parame
   return result;
 }
 
-// With friction, every Newton step is solved once more on the stick-slip and contact sides it
-// predicts unless the case asks for more (Contact set predictions): the tops' steps from the
-// mass-spring state took 43 Newton iterations so, and crept past 90 on the sides at x
-// (docs/performance-bodies.md, "Newton on the tops").
+// Contact set predictions = auto: with friction, every Newton step is solved once more on the
+// stick-slip and contact sides it predicts (the tops' steps from the mass-spring state took 43
+// Newton iterations so, and crept past 90 on the sides at x: docs/performance-bodies.md, "Newton
+// on the tops"); without, none beyond the globalization's own (newton_solver.h).
 FemParameters with_frictional_predictions(const Problem& problem, FemParameters parameters) {
-  if (problem.friction_coefficient > 0.0)
-    parameters.max_contact_set_predictions = std::max(parameters.max_contact_set_predictions, 1);
+  if (parameters.max_contact_set_predictions == FemParameters::kAutoPredictions)
+    parameters.max_contact_set_predictions = problem.friction_coefficient > 0.0 ? 1 : 0;
   return parameters;
 }
 
@@ -97,12 +97,11 @@ class FemBackend::Implementation {
  public:
   Implementation(const Problem& problem, const FemParameters& parameters)
       : problem_(with_slack_treatment(checked(problem, parameters), parameters, relaxed_law_)),
-        parameters_(parameters),
+        parameters_(with_frictional_predictions(problem, parameters)),
         pattern_(problem_, parameters.element_degree, comm_),
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
         assembly_(pattern_, problem_, uses_cg(parameters.linear_solver), comm_),
-        newton_(pattern_, with_frictional_predictions(problem, parameters),
-                problem.law->stiffness_scale(),
+        newton_(pattern_, parameters_, problem.law->stiffness_scale(),
                 tension_scale_N(pattern_.mean_rest_edge_m(), pattern_.rest_area_m2(),
                                 problem.law->stiffness_scale()),
                 problem.body, comm_),

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace tightfit {
 
@@ -55,6 +56,7 @@ const char* to_string(IterativeSolverMemory memory) {
 }
 
 void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
+  using dealii::Patterns::Anything;
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
@@ -125,18 +127,17 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "prediction after a cut step.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");
-  prm.declare_entry("Contact set predictions", std::to_string(d.max_contact_set_predictions),
-                    Integer(0, 100),
+  prm.declare_entry("Contact set predictions", "auto", Anything(),
                     "How often a Newton step may be solved again with the contact set it "
                     "predicts (count): each node in or out of contact as the linearised gap after "
                     "the step says, and with friction sticking or slipping as the linearised "
                     "offset from its anchor and normal force say, until the sides the step was "
                     "solved on are those it predicts (a primal-dual active-set step; "
-                    "fem/contact_set_prediction.h). 0: a step is solved again on its predicted "
+                    "fem/contact_set_prediction.h), or 'auto': 1 with friction (Contact/Friction "
+                    "coefficient > 0), else 0. 0: a step is solved again on its predicted "
                     "set only while the potential judges (up to 5 times, Globalization) and after "
                     "a step the line search cut (once), every other step on the nodes in contact "
-                    "where it starts; with friction (Contact/Friction coefficient > 0) every step "
-                    "once (docs/backends.md, \"Newton's line search\").");
+                    "where it starts (docs/backends.md, \"Newton's line search\").");
   prm.declare_entry(
       "Penalty factor", "100", Double(1e-3, 1e12),
       "Contact penalty k = beta Y / h_k^2 in Pa/m at each node (Y the law's stiffness "
@@ -211,7 +212,22 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   line_search = prm.get_bool("Line search");
   potential_globalization = prm.get("Globalization") == "potential";
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");
-  max_contact_set_predictions = prm.get_integer("Contact set predictions");
+  const std::string predictions = prm.get("Contact set predictions");
+  if (predictions == "auto") {
+    max_contact_set_predictions = kAutoPredictions;
+  } else {
+    std::size_t end = 0;
+    int count = -1;
+    try {
+      count = std::stoi(predictions, &end);
+    } catch (const std::exception&) {
+      end = 0;
+    }
+    if (end == 0 || end != predictions.size() || count < 0 || count > 100)
+      throw std::invalid_argument("Finite elements/Contact set predictions: '" + predictions +
+                                  "' is neither 'auto' nor a count from 0 to 100");
+    max_contact_set_predictions = count;
+  }
   penalty_factor = prm.get_double("Penalty factor");
   max_augmented_lagrangian_iterations = prm.get_integer("Maximum augmented Lagrangian iterations");
   tangent_shift_N_per_m = prm.get_double("Tangent shift");

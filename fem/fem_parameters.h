@@ -72,8 +72,11 @@ struct FemParameters {
   bool potential_globalization = true;
   int max_line_search_halvings = 10;
   // Newton steps re-solved with the contact set the step predicts, at most this many times per
-  // step (fem/contact_set_prediction.h); 0: each step on the contact set at x.
-  int max_contact_set_predictions = 0;
+  // step (fem/contact_set_prediction.h); 0: each step on the contact set at x (but for the
+  // globalization's own predictions, newton_solver.h); kAutoPredictions: 1 with friction, 0
+  // without (the backend resolves it, fem_backend.cc).
+  static constexpr int kAutoPredictions = -1;
+  int max_contact_set_predictions = kAutoPredictions;
   // Penalty k_k = beta * Y / h_k^2 (Pa/m) of the augmented-Lagrangian contact at node k.
   double penalty_factor = 100.0;
   int max_augmented_lagrangian_iterations = 20;

@@ -34,11 +34,13 @@ std::string scratch_dir(const std::string& case_file, const std::string& backend
 
 // Runs `case_file` with `overrides` on `backend` into a scratch directory; returns each
 // region's mean pressure at the last step, Pa (an empty map when the run failed).
-// With `write_garment`, the garment's VTU is written there too (garment_0000.vtu).
+// With `write_garment`, the garment's VTU is written there too (garment_0000.vtu); with `result`,
+// the run's steps are kept there.
 std::map<std::string, double> region_means_Pa(const std::string& case_file,
                                               std::vector<std::string> overrides,
                                               const std::string& backend,
-                                              bool write_garment = false) {
+                                              bool write_garment = false,
+                                              RunResult* result = nullptr) {
   const std::string dir = scratch_dir(case_file, backend);
   overrides.push_back("Solver/Backend=" + backend);
   overrides.push_back(write_garment ? "Output/Write VTU=true" : "Output/Write VTU=false");
@@ -52,6 +54,7 @@ std::map<std::string, double> region_means_Pa(const std::string& case_file,
       *setup, [&](const Problem& problem) { return file.create_backend(backend, problem); }, dir,
       log);
   EXPECT_TRUE(run.completed) << run.failure << "\n" << log.str();
+  if (result) *result = run;
   std::map<std::string, double> means;
   if (!run.completed) return means;
   for (const auto& row : testing::read_csv(dir + "/regions.csv"))
@@ -201,10 +204,20 @@ TEST(GarmentRegressions, CoarseStockingOnMassSpring) {
 // (45 Newton iterations in 4 contact rounds), 4e-6 to 7e-6 apart: 1e-4 allowed (the shared stop
 // rule's strain error, 1e-4, bounds both states). Newton iterations of the step (pressure.csv):
 // measured 45, 60 allowed (before the shift grew on cut steps it stalled at 5.1e-3 N in its first
-// round, the line search's steps down to 1/512).
+// round, the line search's steps down to 1/512). Each contact round ends as Newton's method does,
+// its shift relaxed away: the last iteration lowers the residual by a factor of 9e-7, 1.2e-5,
+// 5.6e-4 and 4.4e-6 in the four rounds (to 1.8e-11, 1.3e-12, 2.4e-12, 3.8e-13 N against the rule's
+// 8.3e-10 N); a shifted, linearly converging step would lower it by a tenth or less: 2e-3 allowed.
 TEST(GarmentRegressions, CoarseStockingOnFe) {
   const std::string case_file = "cases/stocking_female.prm";
-  const auto means = region_means_Pa(case_file, {"Garment/Mesh scale=2"}, "fem");
+  RunResult run;
+  const auto means = region_means_Pa(case_file, {"Garment/Mesh scale=2"}, "fem", false, &run);
+  ASSERT_FALSE(run.steps.empty());
+  for (const MultiplierRound& round : run.steps.back().report.rounds) {
+    ASSERT_GE(round.residual_N.size(), 2u);
+    const double last = round.residual_N.back(), before = round.residual_N.end()[-2];
+    EXPECT_LE(last, 2e-3 * before) << "a round ends " << before << " N, " << last << " N";
+  }
   expect_means(means, {{"B", 3269.358}, {"C", 1640.268}, {"G", 879.585}}, 1e-4);
   const auto rows = testing::read_csv(scratch_dir(case_file, "fem") + "/pressure.csv");
   ASSERT_FALSE(rows.empty());
