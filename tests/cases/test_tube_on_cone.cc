@@ -196,7 +196,7 @@ void expect_the_plain_steps_holding(const char* route, const testing::BodyCaseRu
 // (fem/contact_set_prediction.h) reach the plain steps' equilibrium: the tube slides onto the
 // cone from 1 % outside, every node coming into contact and sticking or slipping at once.
 // Measured: the pressures equal to the 9 digits printed, the positions 2e-19 m apart, in 10
-// Newton iterations against 28 (without friction in the step's model the predicted steps
+// Newton iterations against 12 (without friction in the step's model the predicted steps
 // stalled at 2.7e-3 N).
 TEST(TubeOnConeBackends, ContactSetPredictionsHoldTheTubeWhereThePlainStepsDo) {
   expect_the_plain_steps_holding("predicted",
@@ -207,8 +207,8 @@ TEST(TubeOnConeBackends, ContactSetPredictionsHoldTheTubeWhereThePlainStepsDo) {
 // docs/backends.md) changes Newton's path, not the equilibrium it stops
 // at: the residual is never shifted. The holding tube, every node coming into contact and
 // sticking or slipping, with a shift of 10 N/m against the plain steps.
-// Measured: the pressures 4e-10 apart, the positions 2.5e-12 m, in 47 Newton iterations
-// against 28 (the shifted steps converge linearly on this stiff tube until the residual's own
+// Measured: the pressures 4e-10 apart, the positions 2.5e-12 m, in 40 Newton iterations
+// against 12 (the shifted steps converge linearly on this stiff tube until the residual's own
 // shift takes over).
 TEST(TubeOnConeBackends, TangentShiftHoldsTheTubeWhereThePlainStepsDo) {
   expect_the_plain_steps_holding("shifted-tangent",
