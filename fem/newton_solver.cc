@@ -451,14 +451,16 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
       ++log.n_shifted_solves;
       ++escalations;
     }
-    // Every shift refused, to kLargestShift, where the step is a short one down the merit's
-    // slope: x is where the merit has a minimum that is not R = 0, and no step is taken.
+    // Every shift refused, to 1e5 times the stiffness scale, where the step is a short one down
+    // the merit's slope: x is where the merit has a minimum that is not R = 0, and no step is
+    // taken (docs/backends.md, "Newton's line search").
     if (!accepted) {
       ++log.n_failed_line_searches;
-      fail(StopReason::stalled, step,
-           "the line search refused Newton's step at every shift of the tangent, up to " +
-               std::to_string(kLargestShift) + " times the stiffness scale",
-           residual_N, failure_details(system, x, log));
+      std::ostringstream what;
+      what.precision(3);
+      what << "the line search refused Newton's step at every shift of the tangent, up to "
+           << shift_N_per_m_ << " N/m";
+      fail(StopReason::stalled, step, what.str(), residual_N, failure_details(system, x, log));
     }
     step_cut_ = parameters_.line_search && step_taken < full_step;
     last_increment_ = increment;

@@ -1,7 +1,10 @@
 // Newton's method on the static equilibrium R(x) = 0 of one load step: the consistent tangent,
-// an inexact-Newton forcing term for Krylov solves, a backtracking (Armijo) line search on
-// ||R||_2, a cap on the step length and a Levenberg-Marquardt shift of the tangent where the
-// membrane is slack. The residual is never modified, so the converged state is unbiased.
+// an inexact-Newton forcing term for Krylov solves, a backtracking (Armijo) line search on the
+// potential or ||R||_2, a cap on the step length and an adaptive Levenberg-Marquardt shift of the
+// tangent: it grows tenfold where the line search would cut a step below an eighth (the step is
+// solved again), relaxes tenfold after a whole step and vanishes at the end, where convergence
+// is Newton's (docs/backends.md, "Newton's line search"). The residual is never modified, so
+// the converged state is unbiased.
 #pragma once
 
 #include "bodies/rigid_body.h"
