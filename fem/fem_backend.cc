@@ -21,6 +21,8 @@
 
 #include <petscsys.h>
 
+#include <algorithm>
+
 namespace tightfit {
 
 namespace {
@@ -79,17 +81,27 @@ Problem with_slack_treatment(const Problem& problem, const FemParameters& parame
   return result;
 }
 
+// Contact set predictions = auto: with friction, every Newton step is solved once more on the
+// stick-slip and contact sides it predicts (the tops' steps from the mass-spring state took 43
+// Newton iterations so, and crept past 90 on the sides at x: docs/performance-bodies.md, "Newton
+// on the tops"); without, none beyond the globalization's own (newton_solver.h).
+FemParameters with_frictional_predictions(const Problem& problem, FemParameters parameters) {
+  if (parameters.max_contact_set_predictions == FemParameters::kAutoPredictions)
+    parameters.max_contact_set_predictions = problem.friction_coefficient > 0.0 ? 1 : 0;
+  return parameters;
+}
+
 }  // namespace
 
 class FemBackend::Implementation {
  public:
   Implementation(const Problem& problem, const FemParameters& parameters)
       : problem_(with_slack_treatment(checked(problem, parameters), parameters, relaxed_law_)),
-        parameters_(parameters),
+        parameters_(with_frictional_predictions(problem, parameters)),
         pattern_(problem_, parameters.element_degree, comm_),
         // The exact (unsymmetric) contact tangent unless CG solves the systems.
         assembly_(pattern_, problem_, uses_cg(parameters.linear_solver), comm_),
-        newton_(pattern_, parameters, problem.law->stiffness_scale(),
+        newton_(pattern_, parameters_, problem.law->stiffness_scale(),
                 tension_scale_N(pattern_.mean_rest_edge_m(), pattern_.rest_area_m2(),
                                 problem.law->stiffness_scale()),
                 problem.body, comm_),
@@ -99,13 +111,11 @@ class FemBackend::Implementation {
     // (held_turn_system.h).
     newton_.set_held_turn(&held_turn_);
     // Frictionless, a step the line search cut is solved once more on the contact set it
-    // predicts (docs/backends.md, "Newton's line search"); with friction only when the case asks
-    // for predictions: the stick-slip set predicted after a cut step sent the partly slipping
-    // tube on a growing cylinder into a stall (residual 7.9e-3 N after 40 iterations).
-    if (parameters.max_contact_set_predictions > 0 || problem.friction_coefficient == 0.0)
-      newton_.set_contact_set_predictor([this](const DofVector& x, const DofVector* increment) {
-        return contact_.predict_contact_set(x, increment);
-      });
+    // predicts (docs/backends.md, "Newton's line search"); with friction every step is
+    // (with_frictional_predictions).
+    newton_.set_contact_set_predictor([this](const DofVector& x, const DofVector* increment) {
+      return contact_.predict_contact_set(x, increment);
+    });
     // Start flat in the layout plane until the caller places the garment.
     set_positions(layout_start_on_every_rank(problem.mesh, pattern_.n_vertices(), comm_));
   }

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace tightfit {
 
@@ -55,6 +56,7 @@ const char* to_string(IterativeSolverMemory memory) {
 }
 
 void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
+  using dealii::Patterns::Anything;
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
@@ -125,14 +127,14 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "prediction after a cut step.");
   prm.declare_entry("Maximum line search halvings", std::to_string(d.max_line_search_halvings),
                     Integer(0, 60), "How often a Newton step may be halved (count).");
-  prm.declare_entry("Contact set predictions", std::to_string(d.max_contact_set_predictions),
-                    Integer(0, 100),
+  prm.declare_entry("Contact set predictions", "auto", Anything(),
                     "How often a Newton step may be solved again with the contact set it "
                     "predicts (count): each node in or out of contact as the linearised gap after "
                     "the step says, and with friction sticking or slipping as the linearised "
                     "offset from its anchor and normal force say, until the sides the step was "
                     "solved on are those it predicts (a primal-dual active-set step; "
-                    "fem/contact_set_prediction.h). 0: a step is solved again on its predicted "
+                    "fem/contact_set_prediction.h), or 'auto': 1 with friction (Contact/Friction "
+                    "coefficient > 0), else 0. 0: a step is solved again on its predicted "
                     "set only while the potential judges (up to 5 times, Globalization) and after "
                     "a step the line search cut (once), every other step on the nodes in contact "
                     "where it starts (docs/backends.md, \"Newton's line search\").");
@@ -147,10 +149,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     std::to_string(d.max_augmented_lagrangian_iterations), Integer(1, 1000),
                     "Multiplier updates per load step before the step fails (count).");
   prm.declare_entry("Tangent shift", "0", Double(0, 1e12),
-                    "Added to the tangent's diagonal, N/m, for bodies other than a cylinder "
-                    "whose rigid motions are not pinned, and for fabric hanging slack off the "
-                    "body, whose Newton increments would otherwise reach metres (the tops: 10 "
-                    "N/m, docs/performance.md). It changes the Newton path; the residual is not "
+                    "Added to the tangent's diagonal, N/m, on every Newton system, beside the "
+                    "adaptive Levenberg-Marquardt shift Newton grows where the line search would "
+                    "cut a step below an eighth (docs/backends.md, \"Newton's line search\"; no "
+                    "case needs it). It changes the Newton path; the residual is not "
                     "shifted, so the step still ends at an equilibrium to the stop rule (where "
                     "there are several, as for fabric slipping at friction's limit, not "
                     "necessarily the same one).");
@@ -210,7 +212,22 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   line_search = prm.get_bool("Line search");
   potential_globalization = prm.get("Globalization") == "potential";
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");
-  max_contact_set_predictions = prm.get_integer("Contact set predictions");
+  const std::string predictions = prm.get("Contact set predictions");
+  if (predictions == "auto") {
+    max_contact_set_predictions = kAutoPredictions;
+  } else {
+    std::size_t end = 0;
+    int count = -1;
+    try {
+      count = std::stoi(predictions, &end);
+    } catch (const std::exception&) {
+      end = 0;
+    }
+    if (end == 0 || end != predictions.size() || count < 0 || count > 100)
+      throw std::invalid_argument("Finite elements/Contact set predictions: '" + predictions +
+                                  "' is neither 'auto' nor a count from 0 to 100");
+    max_contact_set_predictions = count;
+  }
   penalty_factor = prm.get_double("Penalty factor");
   max_augmented_lagrangian_iterations = prm.get_integer("Maximum augmented Lagrangian iterations");
   tangent_shift_N_per_m = prm.get_double("Tangent shift");

@@ -193,8 +193,10 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
   // The potential judges the first solve of a load step, where the garment travels onto the
   // body; the later rounds start next to the solution, where on a mesh body its minimum is not
   // R = 0 (see kDefectRatio).
-  const bool potential_on =
-      parameters_.line_search && parameters_.potential_globalization && energy_;
+  // With friction there is none (its energy is NaN): ||R|| judges from the start, and the
+  // switch below never sends the solve back to its start (two iterations lost on the tops).
+  const bool potential_on = parameters_.line_search && parameters_.potential_globalization &&
+                            energy_ && std::isfinite(energy_(x));
   bool potential_judges = potential_on && first_solve_ && potential_trusted_;
   first_solve_ = false;
   // Where the load step's first solve starts: it starts again from here, judged by ||R||_2,
@@ -350,7 +352,7 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         // A singular tangent the residual's shift is too small to lift (a loose, stress-free
         // garment whose midpoint nodes have no stiffness across it): shift as after a failed
         // line search.
-        if (escalations >= 8) throw;
+        if (escalations >= kMaxEscalations) throw;
         linear_solver_->reset();  // a failed factorization is not reused
         shift_N_per_m_ = grown_shift_N_per_m();
         ++log.n_shifted_solves;
@@ -410,7 +412,15 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
             accepted = energy_(trial) <= energy_x_J + 1e-4 * s * slope_J;
           }
         }
-        if (accepted || halving >= parameters_.max_line_search_halvings) break;
+        // While the shift may still grow, a step is cut to an eighth at most
+        // (kHalvingsBeforeShift): shorter, it would follow a soft mode of the tangent far past
+        // where its linearisation holds, and the shift grows instead (below). Once every shift is
+        // spent, the halvings the case allows.
+        const int halvings =
+            escalations < kMaxEscalations
+                ? std::min(kHalvingsBeforeShift, parameters_.max_line_search_halvings)
+                : parameters_.max_line_search_halvings;
+        if (accepted || halving >= halvings) break;
         s *= 0.5;
       }
       if (!parameters_.line_search) {
@@ -419,14 +429,12 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         tangent_current = false;
       }
       if (accepted) {
-        // Levenberg-Marquardt's trust: a step the line search had to cut below an eighth
-        // (kCutForShift) followed a soft mode of the tangent (a tube turning round a limb that is
-        // nearly of revolution) far past where its linearisation holds, and taking such slivers
-        // stalled the stocking for hundreds of iterations; the next step is shifted tenfold
-        // more. A step taken nearly whole relaxes the shift tenfold.
-        if (strict && step_taken < kCutForShift * full_step)
-          shift_N_per_m_ = grown_shift_N_per_m();
-        else
+        // Levenberg-Marquardt's trust region, adapted: a step taken whole relaxes the shift
+        // tenfold (it vanishes after a few, and the step's end is Newton's, quadratic); a step the
+        // line search cut keeps it, the shift that made it descend (the loose fabric off the
+        // tops needs about 10 N/m throughout, and relaxing it after every cut step had the next
+        // one refused: 53 iterations against 43).
+        if (step_taken >= full_step)
           shift_N_per_m_ =
               shift_N_per_m_ > 1e-8 * stiffness_scale_N_per_m_ ? 0.1 * shift_N_per_m_ : 0;
         break;
@@ -438,14 +446,22 @@ int NewtonSolver::solve(const LoadStep& step, const Assembler& assemble, NewtonS
         reassemble = true;
         continue;
       }
-      if (escalations >= 8) break;
+      if (escalations >= kMaxEscalations) break;
       shift_N_per_m_ = grown_shift_N_per_m();
       ++log.n_shifted_solves;
       ++escalations;
     }
-    // Every shift refused: the shortest step tried is taken, and counted as a failed line
-    // search (StepReport's newton.n_failed_line_searches); the iteration limit judges.
-    if (!accepted) ++log.n_failed_line_searches;
+    // Every shift refused, to 1e5 times the stiffness scale, where the step is a short one down
+    // the merit's slope: x is where the merit has a minimum that is not R = 0, and no step is
+    // taken (docs/backends.md, "Newton's line search").
+    if (!accepted) {
+      ++log.n_failed_line_searches;
+      std::ostringstream what;
+      what.precision(3);
+      what << "the line search refused Newton's step at every shift of the tangent, up to "
+           << shift_N_per_m_ << " N/m";
+      fail(StopReason::stalled, step, what.str(), residual_N, failure_details(system, x, log));
+    }
     step_cut_ = parameters_.line_search && step_taken < full_step;
     last_increment_ = increment;
     has_increment_ = true;

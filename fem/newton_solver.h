@@ -1,7 +1,10 @@
 // Newton's method on the static equilibrium R(x) = 0 of one load step: the consistent tangent,
-// an inexact-Newton forcing term for Krylov solves, a backtracking (Armijo) line search on
-// ||R||_2, a cap on the step length and a Levenberg-Marquardt shift of the tangent where the
-// membrane is slack. The residual is never modified, so the converged state is unbiased.
+// an inexact-Newton forcing term for Krylov solves, a backtracking (Armijo) line search on the
+// potential or ||R||_2, a cap on the step length and an adaptive Levenberg-Marquardt shift of the
+// tangent: it grows tenfold where the line search would cut a step below an eighth (the step is
+// solved again), relaxes tenfold after a whole step and vanishes at the end, where convergence
+// is Newton's (docs/backends.md, "Newton's line search"). The residual is never modified, so
+// the converged state is unbiased.
 #pragma once
 
 #include "bodies/rigid_body.h"
@@ -162,8 +165,13 @@ class NewtonSolver {
   // Iterations in a row that lower the residual by less than a tenth before the potential stops
   // judging for the rest of a solve (see solve()).
   static constexpr int kStalledIterations = 5;
-  // A step cut below this fraction of Newton's grows the next step's shift (see solve()).
-  static constexpr double kCutForShift = 1.0 / 8.0;
+  // The line search's halvings before a refused step grows the shift instead (see solve()): a
+  // step is cut to an eighth at most while the shift may grow. Cut further, the stocking's and
+  // the tops' steps crept (1/512 of Newton's for hundreds of iterations).
+  static constexpr int kHalvingsBeforeShift = 3;
+  // How often the shift grows tenfold within one iteration: from 1e-2 of the stiffness scale to
+  // 1e5 of it (kLargestShift caps it).
+  static constexpr int kMaxEscalations = 8;
   // The largest shift, over the stiffness scale: beyond it the step is a steepest descent
   // already, too short to matter.
   static constexpr double kLargestShift = 1e6;

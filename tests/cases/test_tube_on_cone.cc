@@ -170,8 +170,9 @@ TEST(TubeOnConeBackends, HoldingTubeAgrees) {
   EXPECT_LE(largest_friction_ratio, 1.0 + 1e-6);
 }
 
-// The FE backend's plain Newton steps holding the tube (mu = 1.25 tan(a)), solved once for the
-// tests that compare another route to the same equilibrium with them.
+// The FE backend's plain Newton steps holding the tube (mu = 1.25 tan(a), Contact set
+// predictions = 0: none, where the default with friction predicts each step once), solved once
+// for the tests that compare another route to the same equilibrium with them.
 const testing::BodyCaseRun& plain_fem_holding_tube() {
   static const testing::BodyCaseRun run = tube_on_cone("fem", 1.25 * kTanHalfAngle);
   return run;
@@ -195,19 +196,19 @@ void expect_the_plain_steps_holding(const char* route, const testing::BodyCaseRu
 // (fem/contact_set_prediction.h) reach the plain steps' equilibrium: the tube slides onto the
 // cone from 1 % outside, every node coming into contact and sticking or slipping at once.
 // Measured: the pressures equal to the 9 digits printed, the positions 2e-19 m apart, in 10
-// Newton iterations against 28 (without friction in the step's model the predicted steps
+// Newton iterations against 12 (without friction in the step's model the predicted steps
 // stalled at 2.7e-3 N).
 TEST(TubeOnConeBackends, ContactSetPredictionsHoldTheTubeWhereThePlainStepsDo) {
   expect_the_plain_steps_holding("predicted",
                                  tube_on_cone("fem", 1.25 * kTanHalfAngle, 1.0, 1e-4, 1));
 }
 
-// A constant shift of the tangent (Finite elements/Tangent shift, the tops' remedy for the slack
-// fabric off the body, docs/performance.md) changes Newton's path, not the equilibrium it stops
+// A constant shift of the tangent (Finite elements/Tangent shift, beside Newton's adaptive one,
+// docs/backends.md) changes Newton's path, not the equilibrium it stops
 // at: the residual is never shifted. The holding tube, every node coming into contact and
-// sticking or slipping, with the tops' shift of 10 N/m against the plain steps.
-// Measured: the pressures 4e-10 apart, the positions 2.5e-12 m, in 47 Newton iterations
-// against 28 (the shifted steps converge linearly on this stiff tube until the residual's own
+// sticking or slipping, with a shift of 10 N/m against the plain steps.
+// Measured: the pressures 4e-10 apart, the positions 2.5e-12 m, in 40 Newton iterations
+// against 12 (the shifted steps converge linearly on this stiff tube until the residual's own
 // shift takes over).
 TEST(TubeOnConeBackends, TangentShiftHoldsTheTubeWhereThePlainStepsDo) {
   expect_the_plain_steps_holding("shifted-tangent",
