@@ -417,19 +417,11 @@ double MassSpringBackend::choose_time_step_s() {
       stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
       if (friction_.active()) stiffness[i] += friction_.tangential_stiffness_N_per_m(int(i));
     }
-  inertia_kg_ = mass_kg_;
-  if (parameters_.mass_scaling_ratio > 0 && !x_.empty()) {
-    // Mass scaling: the particles stiffer for their mass than the ratio times the median one
-    // move as if heavier, so that the time step follows the typical particle.
-    std::vector<double> over_mass(x_.size());
-    for (std::size_t i = 0; i < x_.size(); ++i) over_mass[i] = stiffness[i] / mass_kg_[i];
-    std::vector<double> sorted = over_mass;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double limit = parameters_.mass_scaling_ratio * sorted[sorted.size() / 2];
-    if (limit > 0)
-      for (std::size_t i = 0; i < x_.size(); ++i)
-        if (over_mass[i] > limit) inertia_kg_[i] = stiffness[i] / limit;
-  }
+  // Mass scaling: the particles stiffer for their mass than the ratio times the median one
+  // move as if heavier, so that the time step follows the typical particle.
+  inertia_kg_ = parameters_.mass_scaling_ratio > 0
+                    ? mass_scaled_kg(stiffness, mass_kg_, parameters_.mass_scaling_ratio)
+                    : mass_kg_;
   // The contact dampers, if any, may ask for a shorter step than the springs (a damping ratio
   // above about a half of the stiffest vertex's, where the contact spring sets the step).
   return std::min(

@@ -5,6 +5,7 @@
 // Mass spring/Mass scaling: the same squashed start with the squashed edge's particles made
 // heavier keeps the settled state's step from the first frame and settles to the same state.
 #include "massspring/massspring_backend.h"
+#include "massspring/stable_time_step.h"
 #include "test_meshes.h"
 #include "tube_on_cylinder.h"
 
@@ -72,6 +73,18 @@ TEST(MassSpringSolver, TimeStepUpdatesFollowTheStateFromASquashedStart) {
   // ContactMultipliersRemoveThePenaltyFromThePressure).
   EXPECT_NEAR(total_contact_force_N(updated.state) / total_contact_force_N(once.state), 1.0,
               1.4e-4);
+}
+
+TEST(MassScaling, RaisesOnlyTheParticlesAboveTheRatioTimesTheMedian) {
+  // Stiffness over mass 1, 2, 3, 100 and 8 (N/m per kg): the median is 3, the bound 4 x 3 = 12,
+  // so only the fourth particle is made heavier, to 100 / 12 kg.
+  const std::vector<double> stiffness{1.0, 4.0, 3.0, 100.0, 16.0}, mass{1.0, 2.0, 1.0, 1.0, 2.0};
+  const std::vector<double> scaled = mass_scaled_kg(stiffness, mass, 4.0);
+  const std::vector<double> expected{1.0, 2.0, 1.0, 100.0 / 12.0, 2.0};
+  ASSERT_EQ(scaled.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(scaled[i], expected[i]);
+  // The time step then follows the bound: omega_max^2 = 12.
+  EXPECT_DOUBLE_EQ(stable_time_step_s(stiffness, scaled, 1.0), 2 * std::sqrt(2.0 / 12.0));
 }
 
 TEST(MassSpringSolver, MassScalingKeepsTheStepAndTheStableStateFromASquashedStart) {
