@@ -49,6 +49,7 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   const SimulationMesh& mesh = *problem_.mesh;
   const int n = mesh.n_vertices;
   mass_kg_ = lumped_masses_kg(mesh, problem_.fabric->areal_density_kg_per_m2);
+  inertia_kg_ = mass_kg_;
   rest_vertex_area_m2_ = rest_vertex_areas_m2(mesh);
   constrained_ = ConstrainedDirections(problem_.constraints, n);
   held_turn_ = HeldTurn(problem_.constraints, n);
@@ -407,7 +408,7 @@ void MassSpringBackend::add_contact_damping(const std::vector<Vec3>& v,
 double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double stop_below_N) {
   int stage = 0;
   const double residual = integrator_.frame(
-      x_, v_, mass_kg_, dt, c,
+      x_, v_, inertia_kg_, dt, c,
       [&](const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& force) {
         // The residual the stop rule reads is the static one: the damper is added after it.
         // The first stage queries the body; the later ones may carry its answers.
@@ -449,7 +450,7 @@ bool MassSpringBackend::creeping(double stop_N, double c) const {
          c * momentum().norm() >= 0.5 * frame_net_N_;
 }
 
-double MassSpringBackend::choose_time_step_s() const {
+double MassSpringBackend::choose_time_step_s() {
   if (parameters_.time_step_s > 0) return parameters_.time_step_s;
   // Every particle counts its penalty spring whether it touches the body now or not: it may
   // touch it during the step.
@@ -461,13 +462,18 @@ double MassSpringBackend::choose_time_step_s() const {
       stiffness[i] += problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i];
       if (friction_.active()) stiffness[i] += friction_.tangential_stiffness_N_per_m(int(i));
     }
+  // Mass scaling: the particles stiffer for their mass than the ratio times the median one
+  // move as if heavier, so that the time step follows the typical particle.
+  inertia_kg_ = parameters_.mass_scaling_ratio > 0
+                    ? mass_scaled_kg(stiffness, mass_kg_, parameters_.mass_scaling_ratio)
+                    : mass_kg_;
   // The contact dampers, if any, may ask for a shorter step than the springs (a damping ratio
   // above about a half of the stiffest vertex's, where the contact spring sets the step).
   return std::min(
-      stable_time_step_s(stiffness, mass_kg_, parameters_.time_step_safety),
+      stable_time_step_s(stiffness, inertia_kg_, parameters_.time_step_safety),
       std::min(
-          damper_time_step_s(contact_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety),
-          damper_time_step_s(stick_damper_N_s_per_m_, mass_kg_, parameters_.time_step_safety)));
+          damper_time_step_s(contact_damper_N_s_per_m_, inertia_kg_, parameters_.time_step_safety),
+          damper_time_step_s(stick_damper_N_s_per_m_, inertia_kg_, parameters_.time_step_safety)));
 }
 
 double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in_contact) {

@@ -122,7 +122,9 @@ class MassSpringBackend final : public Backend {
   bool creeping(double stop_N, double c) const;
   // The mass-weighted sum of the velocities, kg m/s.
   Vec3 momentum() const;
-  double choose_time_step_s() const;
+  // The automatic time step at the current state, with the mass scaling it allows
+  // (MassSpringParameters::mass_scaling_ratio), which it keeps in inertia_kg_.
+  double choose_time_step_s();
   // The largest depth of a vertex in contact at the current state, m; with
   // `update_multipliers`, Uzawa's update first: each vertex's multiplier becomes its contact
   // force (penalty_contact.h). `in_contact` (if given) counts the vertices in contact.
@@ -142,6 +144,9 @@ class MassSpringBackend final : public Backend {
   TriangleElements elements_;
   BendingHinges hinges_;
   std::vector<double> mass_kg_;
+  // The masses RK4 moves the particles with: mass_kg_, the stiffest for their mass made heavier
+  // by the mass scaling (choose_time_step_s). Weight, net force and momentum use mass_kg_.
+  std::vector<double> inertia_kg_;
   std::vector<double> rest_vertex_area_m2_;
   ConstrainedDirections constrained_;
   HeldTurn held_turn_;  // every vertex held along one direction: the mean turn about it too

@@ -103,6 +103,15 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Time step safety", text(d.time_step_safety), Double(1e-3, 1.2),
                     "Fraction of the RK4 stability limit used by the automatic time step, "
                     "dimensionless.");
+  prm.declare_entry("Mass scaling", text(d.mass_scaling_ratio), Double(0.0),
+                    "RK4 with the automatic time step, dimensionless, 0 or >= 1: a particle "
+                    "whose stiffness bound (membrane, bending, penalty contact) over mass exceeds "
+                    "this many times the median particle's moves with the mass that brings it to "
+                    "that bound, chosen again with the time step; its weight stays its own. The "
+                    "few stiffest, lightest particles (the small triangles at a pattern's short "
+                    "edges) then do not set the whole garment's time step. The stable state does "
+                    "not depend on the masses, only the frames to reach it "
+                    "(docs/cookbook-jumpsuit.md, \"The settle\"). 0 = off.");
   prm.declare_entry("Damping", text(d.damping_per_s), Double(0.0, 1e7),
                     "Mass-proportional damping c, 1/s (each particle's acceleration gets -c v). "
                     "0 = automatic: critical damping of the garment's slowest membrane wave.");
@@ -228,6 +237,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   implicit_approach_factor = prm.get_double("Implicit RK4 approach");
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
+  mass_scaling_ratio = prm.get_double("Mass scaling");
   // The entries that may be auto are read as text here and as numbers once the subsection is
   // left, so that a refused one leaves the handler where it was.
   const std::string update_frames_text = prm.get("Time step update frames");

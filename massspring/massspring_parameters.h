@@ -55,6 +55,13 @@ struct MassSpringParameters {
   int time_step_update_frames = 0;
   // Fraction of the RK4 stability limit (2 sqrt(2) / omega_max) the automatic step uses.
   double time_step_safety = 0.9;
+  // Mass scaling of the RK4 settle, dimensionless, above 0: with the automatic time step, a
+  // particle whose stiffness bound over mass exceeds this many times the median particle's moves
+  // with the mass that brings it to that bound (its weight stays its own), so that the few
+  // stiffest, lightest particles (the small triangles at a pattern's short edges) do not set the
+  // whole garment's time step. The stable state does not depend on the masses; only the frames
+  // to reach it do. 0: every particle moves with its own mass.
+  double mass_scaling_ratio = 4.0;
   // Mass-proportional damping c (the acceleration gets -c v), 1/s; 0 chooses it from the
   // garment's slowest membrane wave (critical_damping_per_s, stable_time_step.h).
   double damping_per_s = 0.0;

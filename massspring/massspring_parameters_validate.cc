@@ -13,6 +13,8 @@ void MassSpringParameters::validate() const {
   require(time_step_s >= 0, "Time step", "must be >= 0 (s; 0 = automatic)");
   require(time_step_safety > 0 && time_step_safety <= 1.2, "Time step safety",
           "must be in (0, 1.2]");
+  require(mass_scaling_ratio == 0 || mass_scaling_ratio >= 1, "Mass scaling",
+          "must be 0 (off) or >= 1 (times the median particle's stiffness over mass)");
   require(damping_per_s >= 0, "Damping", "must be >= 0 (1/s; 0 = automatic)");
   require(slide_damping_per_s >= 0, "Slide damping", "must be >= 0 (1/s; 0 = off)");
   require(slide_damping_per_s == 0 || net_force_tolerance > 0, "Slide damping",

@@ -71,18 +71,10 @@ void OpenSeamGarment::set_seam_pull_limit(double pull_limit_N, double sewn_facto
 }
 
 int OpenSeamGarment::limit_stiffness_over_mass(double ratio) {
-  const std::vector<double> stiffness = stiffness_bounds_N_per_m();
-  std::vector<double> over_mass(stiffness.size());
-  for (std::size_t i = 0; i < stiffness.size(); ++i) over_mass[i] = stiffness[i] / mass_kg_[i];
-  std::vector<double> sorted = over_mass;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double limit = ratio * sorted[sorted.size() / 2];
+  const std::vector<double> scaled = mass_scaled_kg(stiffness_bounds_N_per_m(), mass_kg_, ratio);
   int raised = 0;
-  for (std::size_t i = 0; i < stiffness.size(); ++i)
-    if (over_mass[i] > limit) {
-      mass_kg_[i] = stiffness[i] / limit;
-      ++raised;
-    }
+  for (std::size_t i = 0; i < scaled.size(); ++i) raised += scaled[i] != mass_kg_[i];
+  mass_kg_ = scaled;
   return raised;
 }
 

@@ -28,6 +28,21 @@ double damper_time_step_s(const std::vector<double>& damper_N_s_per_m,
   return rate_max > 0 ? safety * 2.7853 / rate_max : std::numeric_limits<double>::infinity();
 }
 
+std::vector<double> mass_scaled_kg(const std::vector<double>& stiffness,
+                                   const std::vector<double>& mass, double ratio) {
+  std::vector<double> scaled = mass;
+  if (stiffness.empty()) return scaled;
+  std::vector<double> over_mass(stiffness.size());
+  for (std::size_t i = 0; i < stiffness.size(); ++i) over_mass[i] = stiffness[i] / mass[i];
+  std::vector<double> sorted = over_mass;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double limit = ratio * sorted[sorted.size() / 2];
+  if (limit > 0)
+    for (std::size_t i = 0; i < stiffness.size(); ++i)
+      if (over_mass[i] > limit) scaled[i] = stiffness[i] / limit;
+  return scaled;
+}
+
 double critical_damping_per_s(double stiffness_N_per_m, double areal_density_kg_per_m2,
                               double size_m) {
   return 2.0 * M_PI * std::sqrt(stiffness_N_per_m / areal_density_kg_per_m2) / size_m;

@@ -22,6 +22,14 @@ double stable_time_step_s(const std::vector<double>& stiffness_N_per_m,
 double damper_time_step_s(const std::vector<double>& damper_N_s_per_m,
                           const std::vector<double>& mass_kg, double safety);
 
+// Mass scaling for a motion whose path need not be true in time (the dressing, the settle):
+// each particle whose stiffness bound over mass exceeds `ratio` (> 0) times the median
+// particle's gets the mass that brings it to that bound, the others keep theirs. The few
+// stiffest, lightest particles (small triangles at a pattern's short edges) then do not set the
+// whole garment's time step; an equilibrium does not depend on the masses.
+std::vector<double> mass_scaled_kg(const std::vector<double>& stiffness_N_per_m,
+                                   const std::vector<double>& mass_kg, double ratio);
+
 // Mass-proportional damping that critically damps the slowest membrane wave of a garment,
 // 1/s: a wave of speed sqrt(Y / rho) (Y the membrane stiffness, N/m; rho the areal density,
 // kg/m^2) across the garment's size L (m) has omega = pi sqrt(Y / rho) / L, and the damping
