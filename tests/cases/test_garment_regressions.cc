@@ -225,6 +225,45 @@ TEST(GarmentRegressions, CoarseStockingOnFe) {
   EXPECT_LE(std::stoi(rows.back().at("iterations")), 60);
 }
 
+// The stocking's FE step started from the mass-spring backend's settled state (Placement/Kind =
+// from file; docs/stocking.md, "Both backends"), every Finite elements entry at its default. A
+// garment read from a file has no axis, so the held direction is typed: the placement's leg line,
+// read off the case's own scenario. Against the mass-spring means of the state it starts from
+// (the same run); measured FE B 3374.22, C 1689.39, G 904.56 Pa against 3374.20, 1689.37, 904.57,
+// within 1.2e-5: 1e-4 allowed (the shared stop rule's strain error, 1e-4, bounds both states).
+// Newton iterations: measured 16 (8, 5, 3 in three contact rounds), 30 allowed. Each round ends
+// quadratically: its last iteration lowers the residual by a factor of 1.1e-6, 1.3e-4 and 8.9e-6;
+// a linearly converging one would lower it by a tenth or less: 2e-3 allowed.
+TEST(GarmentRegressions, StockingOnFeFromTheMassSpringState) {
+  const std::string case_file = "cases/stocking_female.prm";
+  CaseFile file;
+  file.read(source_dir + "/" + case_file, {"Output/Write VTU=false"});
+  const std::unique_ptr<Scenario> placed = make_scenario(file.parameters());
+  ASSERT_FALSE(placed->problem.constraints.empty());
+  const Vec3 axis = placed->problem.constraints.front().direction;
+  char held[128];
+  std::snprintf(held, sizeof held, "Constraints/Held direction=%.17g,%.17g,%.17g", axis.x(),
+                axis.y(), axis.z());
+
+  const auto settled = region_means_Pa(case_file, {}, "massspring", true);
+  RunResult run;
+  const auto means = region_means_Pa(
+      case_file,
+      {"Placement/Kind=from file",
+       "Placement/From file/File=" + scratch_dir(case_file, "massspring") + "/garment_0000.vtu",
+       held},
+      "fem", false, &run);
+  ASSERT_EQ(settled.size(), 3u);
+  expect_means(means, settled, 1e-4);
+  ASSERT_FALSE(run.steps.empty());
+  EXPECT_LE(run.steps.back().report.iterations, 30);
+  for (const MultiplierRound& round : run.steps.back().report.rounds) {
+    ASSERT_GE(round.residual_N.size(), 2u);
+    const double last = round.residual_N.back(), before = round.residual_N.end()[-2];
+    EXPECT_LE(last, 2e-3 * before) << "a round ends " << before << " N, " << last << " N";
+  }
+}
+
 // The landmark-cut stocking on a body it was not tuned on: GarmentCode's mean male
 // (data/bodies/), only Body/Mesh/File changed, default settings (about 4 s of CPU in its
 // settle; docs/stocking.md, "Cut to the leg"). Measured B 2752.887, C 1564.007, G 817.718 Pa;
