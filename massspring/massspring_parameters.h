@@ -39,6 +39,10 @@ struct MassSpringParameters {
   // Implicit: solves more per Newton iteration on the contact set the last solve predicts
   // (static_newton.h, StaticNewton::ContactSet); 0 = the contact set at the iteration's start.
   int contact_set_predictions = 0;
+  // Implicit: the tangent's compressed triangles and contact blocks replaced by their positive
+  // parts (positive_part.h), so that K + M / tau^2 stays positive definite on a compressed,
+  // friction-held garment (the tops); false: the exact tangent.
+  bool projected_tangent = true;
   // Implicit on a mesh body without friction, above 0: each load step starts with RK4 frames
   // until the residual is below this times the stop rule's tolerance (the garment's travel
   // onto the body), the contact rounds stop early as RK4's do (Inexact contact rounds), and a

@@ -12,7 +12,8 @@
 // tau grows tenfold after every full step, so the iteration becomes Newton's and converges
 // quadratically near the equilibrium. A step that does not lower the residual's norm is
 // halved (backtracking), and when halving does not help, or the factorisation finds the matrix
-// not positive definite, tau shrinks tenfold. The stop rule is RK4's: the largest residual
+// not positive definite, tau shrinks tenfold; after such a refusal tau grows back only halfway
+// (in its logarithm) towards the refused one, a memory that fades twofold with each full step. The stop rule is RK4's: the largest residual
 // force on a vertex below the tolerance; so both reach the same equilibrium to it.
 #pragma once
 
