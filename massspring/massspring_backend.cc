@@ -258,8 +258,7 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   const int n = static_cast<int>(x.size());
   Triplets triplets;
   triplets.reserve(9 * (9 * elements_.size() + 16 * hinges_.size() + x.size()));
-  const bool projected = parameters_.projected_tangent;
-  elements_.add_stiffness(x, triplets, projected);
+  elements_.add_stiffness(x, triplets, projected_tangent());
   hinges_.add_stiffness(x, triplets);
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
@@ -360,8 +359,13 @@ bool MassSpringBackend::predict_contact_set(const Eigen::VectorXd& dx, SparseMat
   return changed;
 }
 
+bool MassSpringBackend::projected_tangent() const {
+  return parameters_.implicit_tangent == ImplicitTangent::projected ||
+         (parameters_.implicit_tangent == ImplicitTangent::automatic && friction_.active());
+}
+
 Mat3 MassSpringBackend::projected_block(const Mat3& block) const {
-  if (!parameters_.projected_tangent) return block;
+  if (!projected_tangent()) return block;
   return positive_part(block);
 }
 
@@ -374,6 +378,7 @@ bool MassSpringBackend::rk4_assists_newton() const {
 
 StaticNewton::Hooks MassSpringBackend::newton_hooks() const {
   StaticNewton::Hooks hooks;
+  hooks.remember_refusals = projected_tangent();
   if (held_turn_.active())
     hooks.held_mode = [this](const std::vector<Vec3>& x, Eigen::VectorXd& w) {
       held_turn_mode(x, w);

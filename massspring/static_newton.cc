@@ -139,7 +139,7 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
       refused_tau *= 2.0;
     } else if (!accepted) {
       if (tau <= shortest_tau_s) break;
-      refused_tau = tau;
+      if (hooks.remember_refusals) refused_tau = tau;
       tau = std::max(0.1 * tau, shortest_tau_s);
     }
   }

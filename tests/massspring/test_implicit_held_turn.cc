@@ -42,7 +42,7 @@ TEST(MassSpringImplicitHeldTurn, StiffnessIsTheDerivativeOfTheResidualWithTheTur
   MassSpringParameters parameters;
   parameters.bending_rigidity_N_m = 0.0;
   // The exact tangent (the projected one drops the contact's curvature term).
-  parameters.projected_tangent = false;
+  parameters.implicit_tangent = ImplicitTangent::exact;
   MassSpringBackend backend(tube.problem, parameters);
   std::vector<Vec3> x = tube.start_positions();
   std::mt19937 random(11);
