@@ -46,7 +46,7 @@ struct MassSpringParameters {
   // Implicit: the tangent's compressed triangles and contact blocks replaced by their positive
   // parts (positive_part.h), so that K + M / tau^2 stays positive definite on a compressed,
   // friction-held garment (the tops); exact: the analytic tangent, whose curvature terms make
-  // Newton faster where it is positive definite (the stocking: 1.5 s against 6.9 s of CPU);
+  // Newton faster where it is positive definite (the stocking: 1.4 s against 6.9 s of CPU);
   // automatic: projected with friction, exact without.
   ImplicitTangent implicit_tangent = ImplicitTangent::automatic;
   // Implicit on a mesh body without friction, above 0: each load step starts with RK4 frames
