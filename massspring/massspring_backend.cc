@@ -11,6 +11,7 @@
 #include "core/tension_scale.h"
 #include "massspring/flat_panel_start.h"
 #include "massspring/lumped_mass.h"
+#include "massspring/positive_part.h"
 #include "massspring/stable_time_step.h"
 
 #include <algorithm>
@@ -257,7 +258,7 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
   const int n = static_cast<int>(x.size());
   Triplets triplets;
   triplets.reserve(9 * (9 * elements_.size() + 16 * hinges_.size() + x.size()));
-  elements_.add_stiffness(x, triplets);
+  elements_.add_stiffness(x, triplets, projected_tangent());
   hinges_.add_stiffness(x, triplets);
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
@@ -287,6 +288,9 @@ void MassSpringBackend::stiffness(const std::vector<Vec3>& x, SparseMatrix& K) c
           block += 0.5 * (r.stiffness_N_per_m + r.stiffness_N_per_m.transpose());
           force_N += r.force_N;
         }
+        // The body's curvature (-lambda dn/dx) and a slip's normal-tangential coupling make
+        // the block indefinite: its positive part (positive_part.h).
+        block = projected_block(block);
         c.force_N = held_projection(i) * force_N;
       }
       c.block = held_projection(i) * block * held_projection(i);
@@ -338,7 +342,7 @@ bool MassSpringBackend::predict_contact_set(const Eigen::VectorXd& dx, SparseMat
       // zero there (penalty_contact.h), the curvature's term left out (lambda is zero at x).
       const NodalContact contact = contact_with_multiplier(
           s, multiplier_N_[i] - penalty_N_per_m * s.signed_distance_m, penalty_N_per_m, true);
-      block = P * contact.stiffness_N_per_m * P;
+      block = P * projected_block(contact.stiffness_N_per_m) * P;
       force = P * contact.force_N;
     } else {
       // Opens: the force and stiffness it has in the system leave it.
@@ -355,6 +359,16 @@ bool MassSpringBackend::predict_contact_set(const Eigen::VectorXd& dx, SparseMat
   return changed;
 }
 
+bool MassSpringBackend::projected_tangent() const {
+  return parameters_.implicit_tangent == ImplicitTangent::projected ||
+         (parameters_.implicit_tangent == ImplicitTangent::automatic && friction_.active());
+}
+
+Mat3 MassSpringBackend::projected_block(const Mat3& block) const {
+  if (!projected_tangent()) return block;
+  return positive_part(block);
+}
+
 bool MassSpringBackend::rk4_assists_newton() const {
   // On a mesh body without friction (the queries carried over RK4's stages): there the
   // approach is where Newton is slow, and the smooth surface's jumps where it stalls.
@@ -364,6 +378,7 @@ bool MassSpringBackend::rk4_assists_newton() const {
 
 StaticNewton::Hooks MassSpringBackend::newton_hooks() const {
   StaticNewton::Hooks hooks;
+  hooks.remember_refusals = projected_tangent();
   if (held_turn_.active())
     hooks.held_mode = [this](const std::vector<Vec3>& x, Eigen::VectorXd& w) {
       held_turn_mode(x, w);

@@ -104,6 +104,11 @@ class MassSpringBackend final : public Backend {
   // Implicit on a mesh body without friction, with Implicit RK4 approach above 0: RK4 frames
   // take the garment onto the body and finish a Newton settle that stalls.
   bool rk4_assists_newton() const;
+  // The implicit route factorises the projected tangent (massspring_parameters.h).
+  bool projected_tangent() const;
+  // A contact's 3x3 tangent block as the implicit route factorises it: with the projected
+  // tangent its symmetric part's positive part (positive_part.h).
+  Mat3 projected_block(const Mat3& block) const;
 
  private:
   // Internal (membrane + bending) force on every particle into `force`, N.

@@ -81,6 +81,16 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "brings into the body, or out of it, to first order in their gaps), so a "
                     "step does not drive a vertex through the penalty; 0 = the contact set at "
                     "the iteration's start only.");
+  prm.declare_entry("Implicit tangent", "auto", Selection("auto|projected|exact"),
+                    "Implicit integrator: the stiffness each Newton iteration factorises. "
+                    "'projected': each compressed triangle's 9x9 stiffness and each contact's "
+                    "3x3 block (the body's curvature, friction's slip) replaced by its positive "
+                    "semi-definite part (negative eigenvalues set to zero), the triangles in "
+                    "tension exact, so the matrix stays positive definite on a compressed, "
+                    "friction-held garment; 'exact': the analytic stiffness, faster where it is "
+                    "positive definite (the frictionless stockings); 'auto': projected with "
+                    "friction, exact without (docs/backends.md, \"The implicit route on the "
+                    "tops\").");
   prm.declare_entry("Implicit RK4 approach", text(d.implicit_approach_factor), Double(0.0),
                     "Implicit integrator on a mesh body without friction, above 0: each load "
                     "step starts with RK4 frames until the largest residual is below this many "
@@ -235,6 +245,10 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
   contact_set_predictions = prm.get_integer("Contact set predictions");
   implicit_approach_factor = prm.get_double("Implicit RK4 approach");
+  const std::string tangent = prm.get("Implicit tangent");
+  implicit_tangent = tangent == "projected" ? ImplicitTangent::projected
+                     : tangent == "exact"   ? ImplicitTangent::exact
+                                            : ImplicitTangent::automatic;
   time_step_s = prm.get_double("Time step");
   time_step_safety = prm.get_double("Time step safety");
   mass_scaling_ratio = prm.get_double("Mass scaling");

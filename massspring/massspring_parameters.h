@@ -31,6 +31,10 @@ enum class Integrator {
   implicit,
 };
 
+// The stiffness the implicit route factorises (docs/backends.md, "The implicit route on the
+// tops").
+enum class ImplicitTangent { automatic, projected, exact };
+
 struct MassSpringParameters {
   // The road to each stable state; the equilibrium, within the stop rule, is the same.
   Integrator integrator = Integrator::rk4;
@@ -39,6 +43,12 @@ struct MassSpringParameters {
   // Implicit: solves more per Newton iteration on the contact set the last solve predicts
   // (static_newton.h, StaticNewton::ContactSet); 0 = the contact set at the iteration's start.
   int contact_set_predictions = 0;
+  // Implicit: the tangent's compressed triangles and contact blocks replaced by their positive
+  // parts (positive_part.h), so that K + M / tau^2 stays positive definite on a compressed,
+  // friction-held garment (the tops); exact: the analytic tangent, whose curvature terms make
+  // Newton faster where it is positive definite (the stocking: 1.4 s against 6.9 s of CPU);
+  // automatic: projected with friction, exact without.
+  ImplicitTangent implicit_tangent = ImplicitTangent::automatic;
   // Implicit on a mesh body without friction, above 0: each load step starts with RK4 frames
   // until the residual is below this times the stop rule's tolerance (the garment's travel
   // onto the body), the contact rounds stop early as RK4's do (Inexact contact rounds), and a

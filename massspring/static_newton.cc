@@ -2,7 +2,9 @@
 
 #include <Eigen/CholmodSupport>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace tightfit {
@@ -69,6 +71,7 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
   double largest = forces(x, force);
   double norm = norm2(force);
   double tau = initial_tau_s;
+  double refused_tau = std::numeric_limits<double>::infinity();  // the last refused tau, s
   SparseMatrix K;
   Eigen::VectorXd rhs(3 * n), dx(3 * n);
   Factorisation& f = *factorisation_;
@@ -128,10 +131,15 @@ StaticNewton::Result StaticNewton::solve(std::vector<Vec3>& x, const std::vector
       history << length;
     else
       history << (f.llt.info() == Eigen::Success ? "0 (no descent)" : "0 (not positive definite)");
-    if (accepted && length == 1.0)
-      tau = std::min(10.0 * tau, longest_tau_s);
-    else if (!accepted) {
+    if (accepted && length == 1.0) {
+      // Towards a refused tau by halves of the way in its logarithm; that memory fades
+      // (doubles) with each full step. A tau that alternates between a full step and a refusal
+      // (compressed fabric held by friction on a faceted body) would factorise twice per step.
+      tau = std::min({10.0 * tau, std::sqrt(tau * refused_tau), longest_tau_s});
+      refused_tau *= 2.0;
+    } else if (!accepted) {
       if (tau <= shortest_tau_s) break;
+      if (hooks.remember_refusals) refused_tau = tau;
       tau = std::max(0.1 * tau, shortest_tau_s);
     }
   }

@@ -12,8 +12,9 @@
 // tau grows tenfold after every full step, so the iteration becomes Newton's and converges
 // quadratically near the equilibrium. A step that does not lower the residual's norm is
 // halved (backtracking), and when halving does not help, or the factorisation finds the matrix
-// not positive definite, tau shrinks tenfold. The stop rule is RK4's: the largest residual
-// force on a vertex below the tolerance; so both reach the same equilibrium to it.
+// not positive definite, tau shrinks tenfold (Hooks::remember_refusals: how it grows back). The
+// stop rule is RK4's: the largest residual force on a vertex below the tolerance; so both reach the
+// same equilibrium to it.
 #pragma once
 
 #include "core/types.h"
@@ -51,6 +52,11 @@ class StaticNewton {
     // Above 0: stop (not converged) once the largest residual has not fallen below 0.9 times
     // its value this many iterations before: a stall, for the caller to finish another way.
     int stall_iterations = 0;
+    // After a refused step, grow tau back only halfway (in its logarithm) towards the refused
+    // value, a memory that fades twofold with each full step; without it tau grows tenfold
+    // after every full step. For the projected tangent on a friction-held garment, where a
+    // tau alternating between a full step and a refusal factorised twice per step.
+    bool remember_refusals = false;
   };
 
   struct Result {

@@ -1,5 +1,7 @@
 #include "massspring/triangle_elements.h"
 
+#include "massspring/positive_part.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -72,7 +74,8 @@ void TriangleElements::add_stiffness_bounds(const std::vector<Vec3>& x,
 
 namespace tightfit {
 
-void TriangleElements::add_stiffness(const std::vector<Vec3>& x, Triplets& triplets) const {
+void TriangleElements::add_stiffness(const std::vector<Vec3>& x, Triplets& triplets,
+                                     bool projected) const {
   for (const Element& e : elements_) {
     const Mat32 F = deformation_gradient(e, x);
     const Mat2 C = F.transpose() * F;
@@ -86,13 +89,21 @@ void TriangleElements::add_stiffness(const std::vector<Vec3>& x, Triplets& tripl
       B[j].row(1) = g.y() * F.col(1).transpose();
       B[j].row(2) = g.y() * F.col(0).transpose() + g.x() * F.col(1).transpose();
     }
+    Mat9 K;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         const double geometric = e.gradient[i].dot(S * e.gradient[j]);
-        const Mat3 block =
+        K.block<3, 3>(3 * i, 3 * j) =
             e.rest_area_m2 * (B[i].transpose() * D * B[j] + geometric * Mat3::Identity());
-        add_block(triplets, e.vertex[i], e.vertex[j], block);
       }
+    // In tension (S and D positive semi-definite) both terms are, and K is left exact; a
+    // compressed element's K takes its positive part (positive_part.h).
+    if (projected && !(Eigen::SelfAdjointEigenSolver<Mat2>(S).eigenvalues().minCoeff() >= 0.0 &&
+                       Eigen::SelfAdjointEigenSolver<Mat3>(D).eigenvalues().minCoeff() >= 0.0))
+      clamp_to_positive_part(K);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        add_block(triplets, e.vertex[i], e.vertex[j], K.block<3, 3>(3 * i, 3 * j));
   }
 }
 

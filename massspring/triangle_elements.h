@@ -36,8 +36,12 @@ class TriangleElements {
   // Appends the exact stiffness K = -df/dx (N/m) of every triangle, its nine 3x3 vertex blocks
   // K_ij = A0 [B_i^T D B_j + (g_i . S g_j) I] (D the law's tangent, S its stress, B_j the
   // strain's derivative by x_j in Voigt order: rows g_j1 F1^T, g_j2 F2^T, g_j2 F1^T + g_j1 F2^T
-  // with F1, F2 the columns of F), to `triplets`.
-  void add_stiffness(const std::vector<Vec3>& positions_m, Triplets& triplets) const;
+  // with F1, F2 the columns of F), to `triplets`. `projected`: a triangle whose stress S or
+  // tangent D is not positive semi-definite (compressed) adds the positive part of its 9x9
+  // stiffness instead (positive_part.h), as a tension-field membrane has no compressive
+  // stiffness; the others add their exact one, positive semi-definite already.
+  void add_stiffness(const std::vector<Vec3>& positions_m, Triplets& triplets,
+                     bool projected = false) const;
 
   std::size_t size() const { return elements_.size(); }
 
