@@ -51,31 +51,35 @@ double total(Pair v) {
 // field by field (term k's field f at pair k / 2, lane k % 2), in a buffer that only grows (no
 // allocation once warm): so that a term's fields are written with one address and a pair's
 // field is read in one load.
+// The fields: delta = x - p_i; w_i (scaled by the facing factor once m is known); alpha, beta
+// (H w = alpha I + beta delta delta^T); grad w; the screen F (eq. F1) and its two derivatives;
+// the facing argument a_i (eq. F3); n_i; |delta|, r, s_i, 1 / s_i^2; d_i; grad d_i = n_i + K_i
+// delta.
 enum Field {
   delta_x,
   delta_y,
-  delta_z,  // delta = x - p_i
-  weight,   // w_i, scaled by the facing factor once m is known
+  delta_z,
+  weight,
   alpha,
-  beta,  // H w = alpha I + beta delta delta^T
+  beta,
   dw_x,
   dw_y,
-  dw_z,  // grad w
+  dw_z,
   screen,
   screen_slope,
-  screen_curvature,  // F (eq. F1) and its derivatives
-  facing,            // a_i (eq. F3)
+  screen_curvature,
+  facing,
   normal_x,
   normal_y,
-  normal_z,  // n_i
+  normal_z,
   distance_m,
   ratio,
   support_length,
-  inverse_support_squared,  // |delta|, r, s_i, 1 / s_i^2
-  quadric_d,                // d_i
+  inverse_support_squared,
+  quadric_d,
   dd_x,
   dd_y,
-  dd_z,  // grad d_i = n_i + K_i delta
+  dd_z,
   field_count
 };
 constexpr std::size_t pair_stride = 2 * field_count;
