@@ -86,7 +86,12 @@ class BlendedQuadricField {
   void vertices_near(const Vec3& x_m, double radius_m, std::vector<int>& vertices) const;
 
   // K_i, 1/m (symmetric, zero along n_i).
-  const Mat3& curvature(int vertex) const { return quadrics_[vertex].curvature_per_m; }
+  Mat3 curvature(int vertex) const {
+    const double* k = quadrics_[vertex].curvature_per_m;
+    Mat3 K;
+    K << k[0], k[3], k[4], k[3], k[1], k[5], k[4], k[5], k[2];
+    return K;
+  }
   // The other parts of vertex i's quadric and weight: p_i, n_i, c_i (m) and s_i (m).
   int vertex_count() const { return static_cast<int>(quadrics_.size()); }
   const Vec3& position(int vertex) const { return quadrics_[vertex].centre_m; }
@@ -95,16 +100,17 @@ class BlendedQuadricField {
   double support_m(int vertex) const { return quadrics_[vertex].support_m; }
 
  private:
-  // Everything a vertex's term reads, side by side (two cache lines), so that a query's scan
-  // of its 30 to 100 candidates loads each vertex once (docs/performance.md, "The body query
-  // alone"). beyond_squared_m2 = s_i^2 (1 + 1e-9): a vertex farther than its root from x has
-  // r >= 1 and adds nothing; over_support_squared = 1 / s_i^2.
+  // Everything a vertex's term reads, side by side (16 doubles, two cache lines), so that a
+  // query's scan of its 30 to 100 candidates loads each vertex once (docs/performance.md, "The
+  // body query alone"). beyond_squared_m2 = s_i^2 (1 + 1e-9): a vertex farther than its root
+  // from x has r >= 1 and adds nothing; over_support_squared = 1 / s_i^2. K_i is symmetric:
+  // its six distinct entries (0,0) (1,1) (2,2) (0,1) (0,2) (1,2).
   struct Quadric {
     Vec3 centre_m;
     double beyond_squared_m2;
     Vec3 normal;
     double support_m;
-    Mat3 curvature_per_m;
+    double curvature_per_m[6];
     double shift_m;  // c_i
     double over_support_squared;
   };
