@@ -54,6 +54,41 @@ TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
   EXPECT_GT(largest_contact, 100 * report.tolerance_N);
 }
 
+TEST(MassSpringSolver, ContactLoadRuleStopsBelowItsThresholdInNewtons) {
+  // The tube on the cylinder at alpha 1.05 (5 % strain): the contact load is small, so the rule at
+  // the contact load (Solver/Contact load tolerance, 1e-4 by default) is tighter than the
+  // tension-scale rule (docs/backends.md, "The stop rule at the contact load"). Read from the
+  // stable state's own forces, outside the backend: the threshold is max(0.1 rule, 1e-4 F), F the
+  // mean contact force on a vertex in contact; the report gives it and the largest residual in
+  // newtons, the residual below it.
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.05 * tube.rest_radius_m());
+  MassSpringBackend backend(tube.problem, MassSpringParameters{});
+  backend.set_positions(tube.start_positions());
+  const StepReport report = backend.solve(LoadStep{0, 1.05, false});
+  const SurfaceState s = backend.state();
+  double largest_N = 0.0, contact_sum_N = 0.0;
+  long in_contact = 0;
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    largest_N = std::max(largest_N, (s.internal_force_N[v] + s.contact_force_N[v]).norm());
+    if (s.in_contact[v]) {
+      contact_sum_N += s.contact_force_N[v].norm();
+      ++in_contact;
+    }
+  }
+  ASSERT_GT(in_contact, 0);
+  const double threshold_N =
+      std::min(report.tolerance_N, std::max(StopRule::contact_load_floor * report.tolerance_N,
+                                            1e-4 * contact_sum_N / double(in_contact)));
+  std::printf("threshold %g N (tension-scale rule %g N); residual %g N, reported %g N\n",
+              threshold_N, report.tolerance_N, largest_N, report.residual_N);
+  EXPECT_LT(threshold_N, report.tolerance_N);  // the contact-load rule is the tighter here
+  // The same forces summed in another order.
+  EXPECT_NEAR(report.load_tolerance_N, threshold_N, 1e-9 * threshold_N);
+  EXPECT_NEAR(report.residual_N, largest_N, 1e-6 * threshold_N);
+  EXPECT_LT(largest_N, threshold_N);
+}
+
 TEST(MassSpringSolver, RmsStopRuleLeavesTheRootMeanSquareResidualBelowTheTolerance) {
   // Stop norm = rms: the stable state's root mean square residual, computed here from the
   // state's own forces, is below the tolerance, while its largest residual may exceed it (by
