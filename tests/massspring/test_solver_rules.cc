@@ -2,6 +2,7 @@
 // balance, state() separates internal from contact force, and failures throw SolverError
 // naming the step instead of hanging.
 #include "core/constrained_directions.h"
+#include "massspring/massspring_dressing_stage.h"
 #include "massspring/massspring_entry.h"
 #include "test_meshes.h"
 #include "tube_on_cylinder.h"
@@ -87,6 +88,32 @@ TEST(MassSpringSolver, ContactLoadRuleStopsBelowItsThresholdInNewtons) {
   EXPECT_NEAR(report.load_tolerance_N, threshold_N, 1e-9 * threshold_N);
   EXPECT_NEAR(report.residual_N, largest_N, 1e-6 * threshold_N);
   EXPECT_LT(largest_N, threshold_N);
+}
+
+TEST(MassSpringSolver, CoarseSettleTakesTheFacetedBodysNetForceRule) {
+  // The dressing stage's settle (docs/dressing.md, "Coarse to fine") of the tube on the cylinder
+  // at alpha 1.3 under gravity, held by friction 0.3: with no net force tolerance of its own it
+  // reads none on a smooth body and the faceted body's default, 5 % of the weight, on a faceted
+  // one, the weight from outside the code (rest area x areal density x standard gravity); the
+  // state it stops at has its net force below that.
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  tube.problem.friction_coefficient = 0.3;
+  tube.problem.tangential_stiffness_Pa_per_m = tube.problem.contact_stiffness_Pa_per_m;
+  const double weight_N =
+      2 * 0.157 * test::TubeOnCylinder::height_m * tube.fabric.areal_density_kg_per_m2 * 9.80665;
+  CoarseSettle rule;
+  rule.relative_tolerance = 1e-2;
+  const MassSpringDressingStage stage;
+  const SettledGarment smooth =
+      stage.settle(tube.problem, tube.start_positions(), LoadStep{0, 1.3, true}, rule);
+  EXPECT_EQ(smooth.report.net_force_limit_N, 0.0);
+  rule.faceted_body = true;
+  const SettledGarment faceted =
+      stage.settle(tube.problem, tube.start_positions(), LoadStep{0, 1.3, true}, rule);
+  EXPECT_NEAR(faceted.report.net_force_limit_N, 0.05 * weight_N,
+              1e-12 * weight_N);  // sums in another order
+  EXPECT_LT(faceted.report.net_force_N.norm(), faceted.report.net_force_limit_N);
 }
 
 TEST(MassSpringSolver, RmsStopRuleLeavesTheRootMeanSquareResidualBelowTheTolerance) {
