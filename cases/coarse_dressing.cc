@@ -21,6 +21,13 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
         "/Coarse edge length: only a garment cut from a pattern "
         "(Garment/Kind = pattern file) is meshed at another edge length, not Garment/Kind = " +
         scenario.parameters.garment.kind);
+  if (settle_rule.slide_damping_per_s > 0 && !(settle_rule.net_force_tolerance > 0) &&
+      !scenario.parameters.stop_rule.faceted_body)
+    throw std::invalid_argument(
+        section +
+        "/Coarse slide damping needs a Coarse net force tolerance above 0 on this body (the end "
+        "of the slide is read on the net force limit; on a faceted body mesh the settle has one "
+        "by default)");
   CaseParameters coarse = scenario.parameters;
   coarse.garment.spacing.pattern_edge_length_m = coarse_m;
   coarse.placement.place = dress_coarse;
@@ -35,8 +42,10 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
   }
   std::vector<Vec3> coarse_x = dressed->start_positions_m;
   if (settle_rule.relative_tolerance > 0) {
+    CoarseSettle rule = settle_rule;
+    rule.faceted_body = scenario.parameters.stop_rule.faceted_body;
     const SettledGarment settled = backend_registry().dressing_stage().settle(
-        dressed->problem, coarse_x, dressed->prepare_step(0), settle_rule);
+        dressed->problem, coarse_x, dressed->prepare_step(0), rule);
     std::printf("  dressing: the coarse mesh settled: %s\n", settled.report.text().c_str());
     coarse_x = settled.positions_m;
   }

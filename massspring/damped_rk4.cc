@@ -6,7 +6,7 @@ namespace tightfit {
 
 double DampedRk4::frame(std::vector<Vec3>& x, std::vector<Vec3>& v,
                         const std::vector<double>& mass_kg, double dt, double c,
-                        const Forces& forces, double stop_below) {
+                        const Forces& forces, const Stable& stable) {
   const std::size_t n = x.size();
   if (force_.size() != n)
     for (auto* buffer : {&force_, &stage_x_, &stage_v_, &sum_x_, &sum_v_})
@@ -20,7 +20,7 @@ double DampedRk4::frame(std::vector<Vec3>& x, std::vector<Vec3>& v,
     const double r = forces(xs, vs, force_);
     if (stage == 0) {
       measure = r;
-      if (!(r >= stop_below) || !std::isfinite(r)) return r;
+      if (!std::isfinite(r) || (stable && stable(r))) return r;
     }
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 velocity = vs[i];

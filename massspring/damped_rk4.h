@@ -6,7 +6,6 @@
 #include "core/types.h"
 
 #include <functional>
-#include <limits>
 #include <vector>
 
 namespace tightfit {
@@ -18,12 +17,16 @@ class DampedRk4 {
   using Forces = std::function<double(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                       std::vector<Vec3>& force)>;
 
+  // Whether the state whose force measure the first stage has just returned is stable; read
+  // right after that stage, so it may compare the measure with a threshold of the same state.
+  using Stable = std::function<bool(double measure)>;
+
   // Advances (x, v) by one frame of dt_s and returns the force measure at the frame's start.
-  // When that measure is below `stop_below` or not finite, x and v are left as they are: the
-  // state is already stable (or broken) and the caller decides.
+  // When `stable` (if given) holds at the frame's start or the measure is not finite, x and v are
+  // left as they are: the state is already stable (or broken) and the caller decides.
   double frame(std::vector<Vec3>& x, std::vector<Vec3>& v, const std::vector<double>& mass_kg,
                double dt_s, double damping_per_s, const Forces& forces,
-               double stop_below = -std::numeric_limits<double>::infinity());
+               const Stable& stable = nullptr);
 
  private:
   // Work space, allocated at the first frame (and again only if the particle count changes): the

@@ -232,22 +232,23 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
     size = ResidualSize();
     for (const Vec3& f : force) size.add(f.norm());
   }
-  // The rule at this state's contact load (core/load_step.h), the norm scaled onto tolerance_N_:
-  // norm < threshold reads as scaled norm < tolerance_N_.
-  // The net force limit tightens in the same ratio: the net force is the residuals' sum, and
-  // over the contact load it is the mean pressure's error too (a light sheet lying on a plane).
+  // The rule at this state's contact load (core/load_step.h), which the checks compare the size
+  // with (settle_stop_N).
   stop_threshold_N_ = parameters_.stop.threshold_N(tolerance_N_, contact_load_N, n_in_contact);
-  const double tightening =
-      stop_threshold_N_ < tolerance_N_ ? tolerance_N_ / stop_threshold_N_ : 1.0;
-  const double norm_N = size.read(parameters_.stop.norm, double(n)) * tightening;
-  // The creep test reads the scaled norm and the net force itself (the creep slide is on where
-  // the contact-load rule is off: faceted bodies).
+  const double norm_N = size.read(parameters_.stop.norm, double(n));
   residual_norm_N_ = norm_N;
   residual_net_N_ = net_N.norm();
   if (std::isnan(norm_N)) return norm_N;  // a force not finite
   if (!(net_force_limit_N_ > 0)) return norm_N;
-  // norm < tolerance and |net| < limit at once: the net force scaled onto the tolerance.
-  return std::max(norm_N, net_N.norm() * tightening * tolerance_N_ / net_force_limit_N_);
+  // norm < threshold and |net| < limit at once: the net force scaled onto the tension-scale
+  // rule. Against the contact-load threshold the net force's limit tightens in the same ratio
+  // (net_force_limit_at_N): the net force is the residuals' sum, and over the contact load it is
+  // the mean pressure's error too (a light sheet lying on a plane).
+  return std::max(norm_N, net_N.norm() * tolerance_N_ / net_force_limit_N_);
+}
+
+double MassSpringBackend::net_force_limit_at_N(double threshold_N) const {
+  return net_force_limit_N_ * threshold_N / tolerance_N_;
 }
 
 Vec3 MassSpringBackend::net_force_N(const std::vector<Vec3>& force) {
@@ -420,7 +421,7 @@ void MassSpringBackend::add_contact_damping(const std::vector<Vec3>& v,
   }
 }
 
-double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double stop_below_N) {
+double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, bool may_stop) {
   int stage = 0;
   const double residual = integrator_.frame(
       x_, v_, inertia_kg_, dt, c,
@@ -432,11 +433,13 @@ double MassSpringBackend::rk4_frame(double dt, double c, bool gravity_on, double
         if (first) {
           frame_norm_N_ = residual_norm_N_;
           frame_net_N_ = residual_net_N_;
+          frame_threshold_N_ = stop_threshold_N_;
+          frame_stop_N_ = settle_stop_N();
         }
         add_contact_damping(v, force);
         return r;
       },
-      stop_below_N);
+      [&](double residual_N) { return may_stop && residual_N < frame_stop_N_; });
   for (std::size_t i = 0; i < x_.size(); ++i)
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, v_[i]);
   held_turn_.remove_from_velocities(x_, mass_kg_, v_);
@@ -458,10 +461,11 @@ bool MassSpringBackend::slide_has_ended(double dt_s, double c, double& calm_s) c
   return calm_s >= 3.0 / c;
 }
 
-bool MassSpringBackend::creeping(double stop_N, double c) const {
+bool MassSpringBackend::creeping(double c) const {
   // Each vertex balanced (the norm met) while the garment as a whole is not, and moves at the
   // speed its damping lets the unbalanced force drive it.
-  return frame_norm_N_ < stop_N && frame_net_N_ >= net_force_limit_N_ &&
+  return frame_norm_N_ < frame_stop_N_ &&
+         frame_net_N_ >= net_force_limit_at_N(frame_threshold_N_) &&
          c * momentum().norm() >= 0.5 * frame_net_N_;
 }
 
@@ -510,10 +514,11 @@ double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in
   return penetration_m;
 }
 
-double MassSpringBackend::settle_tolerance_N() const {
-  if (approach_stop_N_ > 0) return approach_stop_N_;
-  if (final_settle_next_) return tolerance_N_;
-  return std::max(tolerance_N_, parameters_.inexact_round_fraction * largest_multiplier_change_N_);
+double MassSpringBackend::settle_stop_N() const {
+  if (approaching_) return parameters_.implicit_approach_factor * stop_threshold_N_;
+  if (final_settle_next_) return stop_threshold_N_;
+  return std::max(stop_threshold_N_,
+                  parameters_.inexact_round_fraction * largest_multiplier_change_N_);
 }
 
 // What the settles of one load step share: the frames are counted over the step (the frame
@@ -559,7 +564,7 @@ SolverError MassSpringBackend::step_failure(StopReason reason, const std::string
   }
   return load_step_failure(reason, "mass spring", run.step,
                            what + " at frame " + std::to_string(run.frame), run.residual_N,
-                           tolerance_N_, details.str());
+                           stop_threshold_N_, details.str());
 }
 
 void MassSpringBackend::run_flat_start(const LoadStep& step, StepReport& report) {
@@ -611,22 +616,27 @@ MultiplierRound MassSpringBackend::settle_implicit(const LoadStep& step) {
     // The approach by RK4 frames (massspring_parameters.h): the garment's travel onto the body,
     // where the contact set changes from one iteration to the next, is Newton's slow part.
     run.approached = true;
-    approach_stop_N_ = parameters_.implicit_approach_factor * tolerance_N_;
+    approaching_ = true;
     settle_rk4(step);
-    approach_stop_N_ = 0.0;
+    approaching_ = false;
   }
   StaticNewton::Hooks hooks = newton_hooks();
   if (assisted) hooks.stall_iterations = 10;
+  // Newton's stop is one number for the whole solve (static_newton.h): each state's residual is
+  // read on the tension-scale rule's scale, r x tolerance / (its state's threshold), against the
+  // tension-scale rule (or a round's inexact stop at the state it starts from).
+  residual_forces(x_, step.gravity_on, force_);
+  const double newton_stop_N = settle_stop_N() * tolerance_N_ / stop_threshold_N_;
   const StaticNewton::Result r = newton_.solve(
       x_, mass_kg_,
       [&](const std::vector<Vec3>& x, std::vector<Vec3>& force) {
-        return residual_forces(x, step.gravity_on, force);
+        return residual_forces(x, step.gravity_on, force) * tolerance_N_ / stop_threshold_N_;
       },
-      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, settle_tolerance_N(),
+      [&](const std::vector<Vec3>& x, SparseMatrix& K) { stiffness(x, K); }, newton_stop_N,
       1.0 / damping_per_s_, parameters_.maximum_newton_iterations - run.newton_iterations, hooks);
   run.frame += r.iterations;
   run.newton_iterations += r.iterations;
-  run.residual_N = r.residual_N;
+  run.residual_N = r.residual_N * stop_threshold_N_ / tolerance_N_;
   run.newton_history += (run.newton_history.empty() ? "" : "; ") + r.history;
   if (r.stalled) {
     // Newton stalled (on a mesh body's smooth surface, where the contact force jumps under
@@ -663,10 +673,8 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
     const double c = quasi_static ? 0.0 : run.sliding ? run.slide_per_s : damping_per_s_;
     // While the garment slides the stop rule is not read: at the slide's lower damping a
     // creep shows a smaller net force (massspring_parameters.h).
-    // The stop rule, or a round's inexact one (read from the last frame's update sizes).
-    const double stop_N = settle_tolerance_N();
-    run.residual_N = rk4_frame(time_step_s_, c, step.gravity_on,
-                               run.sliding ? -std::numeric_limits<double>::infinity() : stop_N);
+    // The stop rule, or a round's inexact one, at the frame's start (settle_stop_N).
+    run.residual_N = rk4_frame(time_step_s_, c, step.gravity_on, !run.sliding);
     if (!std::isfinite(run.residual_N))
       throw step_failure(StopReason::not_finite,
                          "diverged (non-finite force; try a smaller Mass spring/Time step)", false);
@@ -676,10 +684,10 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
         run.slide_frames = frame + 1 - run.slide_start_frame;
         run.history.restart();
       }
-    } else if (run.residual_N < stop_N) {
+    } else if (run.residual_N < frame_stop_N_) {
       break;  // rk4_frame left the stable state untouched
     } else if (run.history.record(frame, run.residual_N, time_step_s_)) {
-      if (run.may_creep_slide && creeping(stop_N, c)) {
+      if (run.may_creep_slide && creeping(c)) {
         // Stalled in a creep (massspring_parameters.h, creep_slide_damping_per_s): the rest of
         // it slides at the lower damping, and the time step keeps its size.
         run.may_creep_slide = false;
@@ -712,7 +720,7 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
                              "diverged (vertex " + std::to_string(i) + " ran away)", false);
     if (frame >= parameters_.maximum_frames) {
       run.residual_N = residual_forces(x_, step.gravity_on, force_);
-      if (!run.sliding && run.residual_N < tolerance_N_) break;
+      if (!run.sliding && run.residual_N < stop_threshold_N_) break;
       throw step_failure(run.sliding ? StopReason::still_sliding : StopReason::iteration_limit,
                          run.sliding
                              ? "was still sliding (Mass spring/Slide damping) at Mass "
@@ -728,25 +736,21 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
 void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) {
   const StepRun& run = *run_;
   const bool implicit = parameters_.integrator == Integrator::implicit;
-  // The net force as the stop rule saw it: friction from the anchors the step solved with
-  // (committing them moves them onto the state and takes their force away).
-  residual_forces(x_, step.gravity_on, force_);
+  // The residual at the end, in newtons, and the threshold it met at the end's contact load (the
+  // net force's limit tightened with it, residual_forces). The net force as the stop rule saw it:
+  // friction from the anchors the step solved with (committing them moves them onto the state
+  // and takes their force away).
+  write_step_header("mass spring", step, tolerance_N_, parameters_.stop.norm, report);
+  report.residual_N = residual_forces(x_, step.gravity_on, force_);
   report.net_force_N = net_force_N(force_);
   report.net_force_read = true;
-  // As tightened at the end's contact load (residual_forces).
-  report.net_force_limit_N = net_force_limit_N_ * std::min(1.0, stop_threshold_N_ / tolerance_N_);
+  report.load_tolerance_N = stop_threshold_N_;
+  report.net_force_limit_N = net_force_limit_at_N(stop_threshold_N_);
   const int slipping = commit_friction_anchors();
   // How many vertices the committed friction anchors let slide (Coulomb cone reached).
   report.n_slipping = friction_.active() ? slipping : -1;
-  write_step_header("mass spring", step, tolerance_N_, parameters_.stop.norm, report);
   report.stop_reason = StopReason::converged;
   report.iterations = report.flat_start.frames + run.frame;
-  // The residual in newtons again (residual_forces scales it onto tolerance_N_), and the
-  // threshold it met at the end's contact load (read by residual_forces above).
-  report.load_tolerance_N = stop_threshold_N_;
-  report.residual_N = stop_threshold_N_ < tolerance_N_
-                          ? run.residual_N * stop_threshold_N_ / tolerance_N_
-                          : run.residual_N;
   if (implicit) {
     report.has_newton = true;
     report.newton.first_pseudo_time_step_s = 1.0 / damping_per_s_;

@@ -64,10 +64,8 @@ class MassSpringBackend final : public Backend {
   // magnitude or the root mean square), N (NaN when one is not finite). With a Net force
   // tolerance, the net force's share of it: max(norm, |sum f| x tolerance / net limit), so
   // one comparison with the tolerance asks both. `carried`: a later stage of an RK4 frame
-  // (contact_force_N). With the contact-load rule (StopRule::threshold_N), the size is scaled
-  // onto the tension-scale rule, norm x tolerance_N_ / threshold (and the net force's share in
-  // the same ratio), the threshold at x kept in stop_threshold_N_, so the comparisons with
-  // tolerance_N_ and the settles' stops read it.
+  // (contact_force_N). The rule's threshold at x's contact load (StopRule::threshold_N) is kept
+  // in stop_threshold_N_: the settles compare the size with it (settle_stop_N).
   double residual_forces(const std::vector<Vec3>& x, bool gravity_on, std::vector<Vec3>& force,
                          bool carried = false) const;
   // The net force on the garment (the sum of `force`), N, and the limit the stop rule puts on
@@ -114,17 +112,21 @@ class MassSpringBackend final : public Backend {
   // Internal (membrane + bending) force on every particle into `force`, N.
   void internal_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const;
   // One RK4 frame of x' = v, v' = f(x)/m - c v from (x_, v_). Returns the residual force at
-  // the frame's start (its first stage), N; when that is below stop_below_N (or not finite)
-  // the state is left untouched.
-  double rk4_frame(double dt_s, double damping_per_s, bool gravity_on, double stop_below_N);
+  // the frame's start (its first stage), N;
+  // when `may_stop` and that is below the settle's stop there (settle_stop_N, kept in
+  // frame_stop_N_), or not finite, the state is left untouched.
+  double rk4_frame(double dt_s, double damping_per_s, bool gravity_on, bool may_stop);
   // Slide damping c_slide (1/s): `calm_s` (s) grows by dt while the damping force on the
   // garment's mean velocity, c_slide |sum m_i v_i|, is below half the net force limit, and
   // restarts at 0 otherwise; true once it reaches three slide damping times, 3 / c_slide.
   bool slide_has_ended(double dt_s, double c_slide, double& calm_s) const;
   // Creep slide damping: whether the last RK4 frame started in a creep (massspring_parameters.h:
-  // the norm below `stop_N`, the net force above its limit and held for at least half by the
+  // the norm below its stop, the net force above its limit and held for at least half by the
   // damping `c` of the garment's mean velocity).
-  bool creeping(double stop_N, double c) const;
+  bool creeping(double c) const;
+  // The net force's limit against a threshold of the stop rule: the limit tightened in the ratio
+  // the contact-load rule tightens the tension-scale one, N.
+  double net_force_limit_at_N(double threshold_N) const;
   // The mass-weighted sum of the velocities, kg m/s.
   Vec3 momentum() const;
   // The automatic time step at the current state, with the mass scaling it allows
@@ -252,12 +254,14 @@ class MassSpringBackend final : public Backend {
   // The two parts of the stop rule's size at the last residual_forces, N: the residual's own
   // norm (Stop norm) and the net force's magnitude; and both at the start of the last RK4 frame.
   mutable double residual_norm_N_ = 0.0, residual_net_N_ = 0.0;
-  double frame_norm_N_ = 0.0, frame_net_N_ = 0.0;
+  // The threshold and the settle's stop there at the start of the last RK4 frame, N.
+  double frame_norm_N_ = 0.0, frame_net_N_ = 0.0, frame_threshold_N_ = 0.0, frame_stop_N_ = 0.0;
   bool final_settle_next_ = true;
-  // The residual below which the current settle stops, N.
-  double settle_tolerance_N() const;
-  // Above 0 while the implicit route's approach runs RK4 frames: their stop, N.
-  double approach_stop_N_ = 0.0;
+  // The residual below which the current settle stops at the state of the last residual_forces:
+  // its threshold, or a round's inexact stop, or the implicit route's approach, N.
+  double settle_stop_N() const;
+  // True while the implicit route's approach runs RK4 frames (Implicit RK4 approach).
+  bool approaching_ = false;
   // Adds each in-contact particle's damper -c (v . d) d to `force`, d = grad g.
   void add_contact_damping(const std::vector<Vec3>& v, std::vector<Vec3>& force) const;
 };

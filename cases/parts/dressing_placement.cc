@@ -127,14 +127,18 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     prm.declare_double("Coarse settle tolerance", 0, 0, ParameterTree::unbounded,
                        "With a Coarse edge length: above 0, the dressed coarse garment first "
                        "settles as the first load step would (gravity, friction), on the "
-                       "mass-spring backend with the rms stop rule at this relative tolerance "
+                       "mass-spring backend with its defaults for the body (a faceted body "
+                       "mesh's contact damper, time step updates, net force rule and creep "
+                       "slide) and the rms stop rule at this relative tolerance "
                        "(Solver/Relative tolerance); 0: carried as dressed.");
     prm.declare_double("Coarse net force tolerance", 0, 0, ParameterTree::unbounded,
                        "With a Coarse settle tolerance: above 0, the coarse settle also asks the "
                        "net force on the garment below this times its weight (Mass spring/Net "
-                       "force tolerance); 0: not asked.");
+                       "force tolerance); 0: the backend's default (0.05 on a faceted body mesh, "
+                       "not asked elsewhere).");
     prm.declare_double("Coarse slide damping", 0, 0, ParameterTree::unbounded,
-                       "With a Coarse net force tolerance: above 0, the coarse settle slides at "
+                       "With a net force rule (Coarse net force tolerance, or a faceted body "
+                       "mesh): above 0, the coarse settle slides at "
                        "this damping until the garment's slide over the body has ended (Mass "
                        "spring/Slide damping), 1/s; 0: off.");
   };
@@ -155,10 +159,6 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
     settle.relative_tolerance = prm.get_double("Coarse settle tolerance");
     settle.net_force_tolerance = prm.get_double("Coarse net force tolerance");
     settle.slide_damping_per_s = prm.get_double("Coarse slide damping");
-    if (settle.slide_damping_per_s > 0 && !(settle.net_force_tolerance > 0))
-      throw std::invalid_argument(
-          "Coarse slide damping needs a Coarse net force tolerance above 0 (the end of the "
-          "slide is read on the net force limit)");
     PlacementMaker dress_here = [=](const Scenario& scenario) {
       PanelWrap placed;
       try {

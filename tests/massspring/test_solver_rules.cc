@@ -2,6 +2,7 @@
 // balance, state() separates internal from contact force, and failures throw SolverError
 // naming the step instead of hanging.
 #include "core/constrained_directions.h"
+#include "massspring/massspring_dressing_stage.h"
 #include "massspring/massspring_entry.h"
 #include "test_meshes.h"
 #include "tube_on_cylinder.h"
@@ -52,6 +53,67 @@ TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
   }
   EXPECT_LT(largest, report.tolerance_N);
   EXPECT_GT(largest_contact, 100 * report.tolerance_N);
+}
+
+TEST(MassSpringSolver, ContactLoadRuleStopsBelowItsThresholdInNewtons) {
+  // The tube on the cylinder at alpha 1.05 (5 % strain): the contact load is small, so the rule at
+  // the contact load (Solver/Contact load tolerance, 1e-4 by default) is tighter than the
+  // tension-scale rule (docs/backends.md, "The stop rule at the contact load"). Read from the
+  // stable state's own forces, outside the backend: the threshold is max(0.1 rule, 1e-4 F), F the
+  // mean contact force on a vertex in contact; the report gives it and the largest residual in
+  // newtons, the residual below it.
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.05 * tube.rest_radius_m());
+  MassSpringBackend backend(tube.problem, MassSpringParameters{});
+  backend.set_positions(tube.start_positions());
+  const StepReport report = backend.solve(LoadStep{0, 1.05, false});
+  const SurfaceState s = backend.state();
+  double largest_N = 0.0, contact_sum_N = 0.0;
+  long in_contact = 0;
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    largest_N = std::max(largest_N, (s.internal_force_N[v] + s.contact_force_N[v]).norm());
+    if (s.in_contact[v]) {
+      contact_sum_N += s.contact_force_N[v].norm();
+      ++in_contact;
+    }
+  }
+  ASSERT_GT(in_contact, 0);
+  const double threshold_N =
+      std::min(report.tolerance_N, std::max(StopRule::contact_load_floor * report.tolerance_N,
+                                            1e-4 * contact_sum_N / double(in_contact)));
+  std::printf("threshold %g N (tension-scale rule %g N); residual %g N, reported %g N\n",
+              threshold_N, report.tolerance_N, largest_N, report.residual_N);
+  EXPECT_LT(threshold_N, report.tolerance_N);  // the contact-load rule is the tighter here
+  // The same forces summed in another order.
+  EXPECT_NEAR(report.load_tolerance_N, threshold_N, 1e-9 * threshold_N);
+  EXPECT_NEAR(report.residual_N, largest_N, 1e-6 * threshold_N);
+  EXPECT_LT(largest_N, threshold_N);
+}
+
+TEST(MassSpringSolver, CoarseSettleTakesTheFacetedBodysNetForceRule) {
+  // The dressing stage's settle (docs/dressing.md, "Coarse to fine") of the tube on the cylinder
+  // at alpha 1.3 under gravity, held by friction 0.3: with no net force tolerance of its own it
+  // reads none on a smooth body and the faceted body's default, 5 % of the weight, on a faceted
+  // one, the weight from outside the code (rest area x areal density x standard gravity); the
+  // state it stops at has its net force below that.
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  tube.problem.friction_coefficient = 0.3;
+  tube.problem.tangential_stiffness_Pa_per_m = tube.problem.contact_stiffness_Pa_per_m;
+  const double weight_N =
+      2 * 0.157 * test::TubeOnCylinder::height_m * tube.fabric.areal_density_kg_per_m2 * 9.80665;
+  CoarseSettle rule;
+  rule.relative_tolerance = 1e-2;
+  const MassSpringDressingStage stage;
+  const SettledGarment smooth =
+      stage.settle(tube.problem, tube.start_positions(), LoadStep{0, 1.3, true}, rule);
+  EXPECT_EQ(smooth.report.net_force_limit_N, 0.0);
+  rule.faceted_body = true;
+  const SettledGarment faceted =
+      stage.settle(tube.problem, tube.start_positions(), LoadStep{0, 1.3, true}, rule);
+  EXPECT_NEAR(faceted.report.net_force_limit_N, 0.05 * weight_N,
+              1e-12 * weight_N);  // sums in another order
+  EXPECT_LT(faceted.report.net_force_N.norm(), faceted.report.net_force_limit_N);
 }
 
 TEST(MassSpringSolver, RmsStopRuleLeavesTheRootMeanSquareResidualBelowTheTolerance) {
