@@ -336,19 +336,16 @@ void declare_stop_rule(ParameterHandler& prm) {
                     "mesh where a few vertices chatter in a limit cycle the largest residual "
                     "never leaves (docs/dressing.md). 'auto': rms on a body mesh with "
                     "Body/Mesh/Contact surface = faceted or with friction, largest elsewhere.");
-  prm.declare_entry(
-      "Gap tolerance", "auto", Patterns::Anything(),
-      "Largest penetration of a vertex in contact at a finished load step with "
-      "contact multiplier updates, m (both backends). auto: 1e-6 on a body mesh "
-      "with Body/Mesh/Contact surface = faceted or with friction (the rounds on the flat "
-      "faces stall "
-      "between 1e-7 and 5e-7 m on the FE backend), 1e-8 elsewhere; on a body mesh "
-      "(Body/Kind = mesh or morph) raised to the gap the stop rule resolves, "
-      "Relative tolerance times h^2 / L "
-      "(h the mean rest edge, L the square root of the rest area, m): the stop "
-      "rule's residual over the stiffness Y of a vertex the membrane alone holds "
-      "(docs/backends.md, 'The gap the stop rule resolves'). A number is used as "
-      "given.");
+  prm.declare_entry("Gap tolerance", "auto", Patterns::Anything(),
+                    "Largest penetration of a vertex in contact at a finished load step with "
+                    "contact multiplier updates, m (both backends). auto: 1e-6 on a body mesh "
+                    "with Body/Mesh/Contact surface = faceted or with friction (the rounds on "
+                    "the flat faces stall between 1e-7 and 5e-7 m on the FE backend), 1e-8 "
+                    "elsewhere; on a body mesh (Body/Kind = mesh or morph) raised to the gap the "
+                    "stop rule resolves, Relative tolerance times h^2 / L (h the mean rest edge, "
+                    "L the square root of the rest area, m): the stop rule's residual over the "
+                    "stiffness Y of a vertex the membrane alone holds (docs/backends.md, 'The gap "
+                    "the stop rule resolves'). A number is used as given.");
 }
 
 // The stop rule's entries once lived in each backend's subsection, with other defaults: a case
@@ -371,7 +368,7 @@ void declare_moved_entries(ParameterHandler& prm, const std::string& subsection)
 // stayed between 1e-3 and 0.1 N against a rule of 2e-6 N (docs/performance-bodies.md).
 bool faceted_mesh_body(ParameterHandler& prm) {
   prm.enter_subsection("Body");
-  bool mesh = prm.get("Kind") == "mesh";
+  const bool mesh = prm.get("Kind") == "mesh";
   prm.enter_subsection("Mesh");
   const bool faceted = prm.get("Contact surface") == "faceted";
   prm.leave_subsection();
