@@ -235,19 +235,34 @@ Vec3 MeshBody::surface_point_near_m(const SurfaceLocation& location, const NearF
   const Vec3 normal = interpolated_normal(location.face, b);
   if (contact_surface_ == MeshBodyOptions::ContactSurface::faceted)
     return flat + skin_offset_m_ * normal;
+  // The anchor's point found before on this shape (NearFaces::anchor_point_m).
+  const bool kept = near && near->anchor_shape == shape_id_ && near->anchor.face == location.face &&
+                    near->anchor.coordinates == location.coordinates;
+  if (kept) return near->anchor_point_m;
   // Out along the interpolated normal to where the smooth gap is the skin's: the inverse of
-  // smooth_location, by Newton's method on g(flat + t N) - skin (dg/dt = grad g . N).
+  // smooth_location, by Newton's method on g(flat + t N) - skin (dg/dt = grad g . N). The first
+  // step starts on the anchor's own face, whose closest point is the flat point itself (the
+  // tree's answer, without the search: the flat point lies up to the blend's sagitta off the
+  // smooth surface, often beyond the kept faces' reach).
   double t = 0.0;
   for (int iteration = 0; iteration < 8; ++iteration) {
-    SurfacePoint s = faceted_near(flat + t * normal, near);
-    smooth_field(flat + t * normal, s, near);
+    const Vec3 y = flat + t * normal;
+    SurfacePoint s = iteration == 0 ? faceted_answer(y, TriangleBvh::Hit{location.face, flat})
+                                    : faceted_near(y, near);
+    smooth_field(y, s, near);
     const double residual = s.signed_distance_m - skin_offset_m_;
     const double slope = s.gap_gradient.dot(normal);
     if (!(slope > 0.1)) break;  // the normal field runs nearly along the surface: stop there
     t -= residual / slope;
     if (std::abs(residual) < 1e-13) break;
   }
-  return flat + t * normal;
+  const Vec3 point = flat + t * normal;
+  if (near) {
+    near->anchor_shape = shape_id_;
+    near->anchor = location;
+    near->anchor_point_m = point;
+  }
+  return point;
 }
 
 DisplayMesh MeshBody::display_mesh() const {

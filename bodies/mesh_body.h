@@ -61,7 +61,8 @@ class MeshBody final : public RigidBody {
     return surface_point_near_m(location, nullptr);
   }
   // The smooth surface's Newton steps out along the normal take their flat answers from
-  // `near`'s faces where the steps lie within their reach (faceted_near), else from the tree.
+  // `near`'s faces where the steps lie within their reach (faceted_near), else from the tree;
+  // the point is kept in `near` and given again for the same anchor on the same shape.
   Vec3 surface_point_near_m(const SurfaceLocation& location, const NearFaces* near) const override;
 
   // New vertex positions, same triangles (a morph or a growth step): the faces' areas and the

@@ -49,6 +49,13 @@ struct NearFaces {
   // The triangle of the last closest point found from `faces`, where the next search starts
   // (TriangleBvh::closest_among's hint); -1 before the first.
   int last_face = -1;
+  // A mesh body's point of the point's friction anchor (surface_point_near_m), found once per
+  // anchor and shape: an anchor stays put through a settle while the vertex asks for its point
+  // at every force evaluation, and on the smooth surface each finding takes Newton steps that
+  // each take the blend. `anchor_shape` 0: nothing kept.
+  mutable std::uint64_t anchor_shape = 0;
+  mutable SurfaceLocation anchor;
+  mutable Vec3 anchor_point_m = Vec3::Zero();
 };
 
 // The parts of a SurfacePoint a caller needs beyond the signed distance, outward normal and

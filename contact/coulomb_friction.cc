@@ -36,7 +36,7 @@ FrictionResponse slipping_friction_along(const Vec3& t, double mu, double normal
 FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const SurfacePoint& at_x,
                                   double normal_force_N, const Vec3& dN_dx,
                                   const SurfaceLocation& anchor, const CoulombFrictionLaw& law,
-                                  NearFaces* near) {
+                                  NearFaces* near, bool place_anchor) {
   if (!(law.friction_coefficient >= 0))
     throw std::invalid_argument("Friction/Coefficient: must not be negative");
   if (!(law.tangential_penalty_N_per_m > 0))
@@ -66,6 +66,10 @@ FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x, const Su
   // and after a long slip (a morphing body drags its anchors centimetres) projecting it back
   // moved the anchor far more than mu N / k, so that the committed anchor no longer gave the
   // force of the accepted state.
+  if (!place_anchor) {
+    r.anchor = anchor;
+    return r;
+  }
   const Vec3 slid = at_x.closest_point_m - (limit / k) * s;
   r.anchor = (near ? body.query_near(slid, *near) : body.query(slid)).location;
   return r;

@@ -60,9 +60,12 @@ FrictionResponse slipping_friction_along(const Vec3& direction, double friction_
 // out of contact (N = 0) feels no friction and its anchor resets to its closest point.
 // Throws std::invalid_argument for mu < 0 or k_t <= 0. `near` (if given) is x's own
 // RigidBody::query_near memory, for the query that places a slipping anchor near x.
+// `place_anchor` false: a caller that keeps only the force and its tangent (a trial state of an
+// explicit frame) skips the query that places a slipping anchor (the response's anchor is then
+// the old one) and may pass an `at_x` without its closest point and location.
 FrictionResponse coulomb_friction(const RigidBody& body, const Vec3& x_m, const SurfacePoint& at_x,
                                   double normal_force_N, const Vec3& normal_force_gradient_N_per_m,
                                   const SurfaceLocation& anchor, const CoulombFrictionLaw& law,
-                                  NearFaces* near = nullptr);
+                                  NearFaces* near = nullptr, bool place_anchor = true);
 
 }  // namespace tightfit

@@ -26,12 +26,12 @@ void FrictionAnchors::place(const RigidBody& body, const std::vector<Vec3>& posi
 FrictionResponse FrictionAnchors::response(int vertex, const RigidBody& body, const Vec3& x_m,
                                            const SurfacePoint& at_x, double normal_force_N,
                                            const Vec3& normal_force_gradient_N_per_m,
-                                           NearFaces* near) const {
+                                           NearFaces* near, bool place_anchor) const {
   CoulombFrictionLaw law;
   law.friction_coefficient = mu_;
   law.tangential_penalty_N_per_m = tangential_stiffness_N_per_m(vertex);
   return coulomb_friction(body, x_m, at_x, normal_force_N, normal_force_gradient_N_per_m,
-                          anchor_[vertex], law, near);
+                          anchor_[vertex], law, near, place_anchor);
 }
 
 }  // namespace tightfit

@@ -32,11 +32,12 @@ class FrictionAnchors {
   void place(const RigidBody& body, const std::vector<Vec3>& positions_m);
   // The return mapping for vertex i at x (`at_x` = body.query(x)) under normal force N with
   // gradient dN/dx (Vec3::Zero() when only the force is wanted).
-  // `near`: x's RigidBody::query_near memory, if kept (coulomb_friction).
+  // `near`: x's RigidBody::query_near memory, if kept; `place_anchor` false: the force and its
+  // tangent only (coulomb_friction).
   FrictionResponse response(int vertex, const RigidBody& body, const Vec3& x_m,
                             const SurfacePoint& at_x, double normal_force_N,
                             const Vec3& normal_force_gradient_N_per_m = Vec3::Zero(),
-                            NearFaces* near = nullptr) const;
+                            NearFaces* near = nullptr, bool place_anchor = true) const;
   // Vertex i's offset from its anchor in the tangent plane at x and its derivative.
   TangentialOffset offset(int vertex, const RigidBody& body, const Vec3& x_m,
                           const SurfacePoint& at_x) const {

@@ -25,7 +25,8 @@ struct StopRule {
   // the default, raised to the gap the stop rule resolves on the garment's mesh
   // (raise_gap_tolerance_to_stop_rule).
   bool gap_tolerance_auto = false;
-  // The case's body is a mesh touched on its flat faces (Body/Mesh/Contact surface = faceted):
+  // The case's body is a mesh touched on its flat faces (Body/Mesh/Contact surface = faceted),
+  // or on its smooth surface by a garment held by friction (Contact/Friction coefficient > 0):
   // the entries left at auto, here and in a backend's subsection, take their values for it
   // (the mass-spring settle's in massspring/massspring_parameters.h).
   bool faceted_body = false;

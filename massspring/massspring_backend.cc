@@ -145,10 +145,11 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
     s.gap_gradient = carry.gap_gradient;
     s.outward_normal = (carry.normal + carry.normal_derivative_per_m * step).normalized();
   } else {
-    // Without friction the force needs the gap and the normals alone (RigidBody::query_parts);
-    // the carried stages need dn/dx too.
+    // The force needs the gap and the normals alone (RigidBody::query_parts); friction and the
+    // carried stages need dn/dx too. Friction's closest point and location would only place a
+    // slipping anchor, which a frame does not keep (commit_friction_anchors places them).
     QueryParts parts;
-    parts.closest_point = parts.location = friction_.active();
+    parts.closest_point = parts.location = false;
     parts.normal_derivative = friction_.active() || carry_contact_;
     s = problem_.body->query_parts(x, near_[i], parts);
     asked_at_m_[i] = x;
@@ -169,7 +170,7 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   if (lambda_N > 0.0) damper_direction_[i] = s.gap_gradient;
   if (friction_.active() && lambda_N > 0.0) {
     const FrictionResponse r =
-        friction_.response(int(i), *problem_.body, x, s, lambda_N, Vec3::Zero(), &near_[i]);
+        friction_.response(int(i), *problem_.body, x, s, lambda_N, Vec3::Zero(), &near_[i], false);
     f += r.force_N;
     if (slipping) *slipping = r.slipping;
     if (!r.slipping && !stick_damper_N_s_per_m_.empty()) stick_normal_[i] = s.outward_normal;

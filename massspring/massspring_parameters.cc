@@ -22,8 +22,8 @@ std::string text(T value) {
 // The documentation's note on an entry whose default depends on the body (on_faceted_body).
 std::string auto_note(double faceted, double elsewhere) {
   return " auto: " + text(faceted) +
-         " on a body mesh with Body/Mesh/Contact surface = faceted (massspring_parameters.h "
-         "says why), " +
+         " on a body mesh with Body/Mesh/Contact surface = faceted or Contact/Friction "
+         "coefficient above 0 (massspring_parameters.h says why), " +
          text(elsewhere) + " elsewhere.";
 }
 
@@ -162,7 +162,8 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "stuck vertex ringing on its friction spring in a crease between two body "
                     "parts (docs/cookbook-jumpsuit.md), not a slipping vertex; the stop rule's "
                     "residual leaves it out. 0 = off. RK4 only. auto: 0.5 on a body mesh with "
-                    "Body/Mesh/Contact surface = faceted for a garment arranged from the body's "
+                    "Body/Mesh/Contact surface = faceted or with friction for a garment arranged "
+                    "from the body's "
                     "landmarks (Placement/Kind = pattern arrangement or arrangement), 0 "
                     "elsewhere.");
   prm.declare_entry("Quasi-static frames", text(d.quasi_static_frames), Integer(0, 100000000),

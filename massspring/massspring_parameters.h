@@ -171,13 +171,14 @@ struct MassSpringParameters {
   void validate() const;
 
   // The settle on a body mesh touched on its flat faces (Body/Mesh/Contact surface = faceted;
-  // docs/dressing.md): these defaults, and the stop rule's (the rms at 3e-3, StopRule), replace
-  // the ones above for the entries a case leaves at auto. A few vertices next to the flat faces
-  // chatter in a contact limit cycle: a damper on each contact spring along the face's normal
-  // (zeta 0.5) ends it without holding back a slide; the time step chosen again
-  // every 100 frames, as a dressed state starts with squashed edges that relax; the net force
-  // on the garment below 5 % of its weight, as the rms alone accepts a garment still sliding;
-  // a creep under that rule slides at 50 1/s (creep_slide_damping_per_s).
+  // docs/dressing.md), or on its smooth surface by a garment held by friction, whose vertices
+  // stick and slip (a top worn under gravity; docs/performance-bodies.md): these defaults, and the
+  // stop rule's (the rms at 3e-3, StopRule), replace the ones above for the entries a case leaves
+  // at auto. A few vertices next to the flat faces chatter in a contact limit cycle: a damper on
+  // each contact spring along the face's normal (zeta 0.5) ends it without holding back a slide;
+  // the time step chosen again every 100 frames, as a dressed state starts with squashed edges that
+  // relax; the net force on the garment below 5 % of its weight, as the rms alone accepts a garment
+  // still sliding; a creep under that rule slides at 50 1/s (creep_slide_damping_per_s).
   static MassSpringParameters on_faceted_body();
 
   static void declare_parameters(dealii::ParameterHandler& prm);

@@ -125,6 +125,50 @@ TEST(CoulombFrictionTangent, OnAMeshBodyStickingAndSlipping) {
   expect_tangent_matches(*body, x, anchor, law(0.3, 1000), true);
 }
 
+// A frame's trial force (place_anchor false, the vertex's answer without its closest point and
+// location, the anchor's point kept in its NearFaces) against the whole return mapping from the
+// tree's answers, on a smooth mesh body, sticking and slipping: the same force and tangent (the
+// gap, normal and dn/dx from the kept faces are the tree's to round-off: docs/bodies.md; 1e-12
+// relative allowed), the old anchor kept, and a slipping anchor placed only when asked.
+TEST(CoulombFrictionAnchor, TrialForceWithoutPlacingTheAnchorIsTheWholeResponses) {
+  testing::write_obj(testing::temporary_path("friction_trial.obj"),
+                     testing::revolution_surface({-0.1, 0.0, 0.1}, {0.05, 0.055, 0.045}, 16));
+  MeshBodyOptions o;
+  o.import.up_axis = "+z";
+  o.contact_surface = MeshBodyOptions::ContactSurface::smooth;
+  const auto body = load_mesh_body(testing::temporary_path("friction_trial.obj"), o);
+  const Vec3 x0(0.0515 * std::cos(0.2), 0.0515 * std::sin(0.2), 0.03);
+  const SurfaceLocation anchor = body->query(x0).location;
+  const Vec3 x = x0 + Vec3(-0.0004, 0.0015, 0.001) - 0.002 * body->query(x0).outward_normal;
+  QueryParts force_only;
+  force_only.closest_point = force_only.location = false;
+  for (const bool slipping : {false, true}) {
+    const CoulombFrictionLaw l = slipping ? law(0.3, 1000) : law(1.0, 50);
+    const FrictionResponse whole =
+        coulomb_friction(*body, x, body->query(x), 1.0, Vec3::Zero(), anchor, l);
+    ASSERT_EQ(whole.slipping, slipping);
+    NearFaces near;
+    for (int frame = 0; frame < 2; ++frame) {  // the anchor's point found, then kept
+      const SurfacePoint at_x = body->query_parts(x, near, force_only);
+      const FrictionResponse trial =
+          coulomb_friction(*body, x, at_x, 1.0, Vec3::Zero(), anchor, l, &near, false);
+      EXPECT_EQ(trial.slipping, slipping);
+      EXPECT_LT((trial.force_N - whole.force_N).norm(), 1e-12 * whole.force_N.norm());
+      EXPECT_LT((trial.stiffness_N_per_m - whole.stiffness_N_per_m).norm(),
+                1e-12 * whole.stiffness_N_per_m.norm());
+      EXPECT_EQ(trial.anchor.face, anchor.face);
+      EXPECT_EQ(trial.anchor.coordinates, anchor.coordinates);
+    }
+    if (slipping) {
+      // The whole response placed the slid anchor mu N / k_t = 0.3 mm behind x's closest point
+      // (the tangent plane's point put back on the surface: (0.3 mm)^2 / 2R = 1e-6 m on the 5 cm
+      // radius; 1e-5 m allowed).
+      EXPECT_NEAR((body->surface_point_m(whole.anchor) - body->query(x).closest_point_m).norm(),
+                  3e-4, 1e-5);
+    }
+  }
+}
+
 TEST(CoulombFrictionAnchor, GrowingCylinderCarriesTheAnchor) {
   // Anchored at angle 30 degrees on a 5 cm cylinder, which then grows to 6 cm. A vertex on the
   // grown surface at angle 30 + 2 degrees is offset from the carried anchor by
