@@ -31,14 +31,29 @@ std::string solver_error_message(MassSpringBackend& backend, const LoadStep& ste
   return "";
 }
 
-TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
+// The tube settled on the cylinder grown to `alpha` times its rest radius, default settings.
+struct SettledTube {
+  StepReport report;
+  SurfaceState state;
+  int n_mesh_vertices = 0;
+};
+SettledTube settle_tube_at(double alpha) {
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
-  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  tube.cylinder.set_radius(alpha * tube.rest_radius_m());
   MassSpringBackend backend(tube.problem, MassSpringParameters{});
   backend.set_positions(tube.start_positions());
-  const StepReport report = backend.solve(LoadStep{0, 1.3, false});
-  const SurfaceState s = backend.state();
-  ASSERT_EQ(s.size(), static_cast<std::size_t>(tube.mesh.n_vertices));
+  SettledTube settled;
+  settled.report = backend.solve(LoadStep{0, alpha, false});
+  settled.state = backend.state();
+  settled.n_mesh_vertices = tube.mesh.n_vertices;
+  return settled;
+}
+
+TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
+  const SettledTube settled = settle_tube_at(1.3);
+  const StepReport& report = settled.report;
+  const SurfaceState& s = settled.state;
+  ASSERT_EQ(s.size(), static_cast<std::size_t>(settled.n_mesh_vertices));
   double largest = 0.0, largest_contact = 0.0;
   for (std::size_t v = 0; v < s.size(); ++v) {
     largest = std::max(largest, (s.internal_force_N[v] + s.contact_force_N[v]).norm());
@@ -62,12 +77,9 @@ TEST(MassSpringSolver, ContactLoadRuleStopsBelowItsThresholdInNewtons) {
   // stable state's own forces, outside the backend: the threshold is max(0.1 rule, 1e-4 F), F the
   // mean contact force on a vertex in contact; the report gives it and the largest residual in
   // newtons, the residual below it.
-  test::TubeOnCylinder tube(0.157, MeshSpacing{});
-  tube.cylinder.set_radius(1.05 * tube.rest_radius_m());
-  MassSpringBackend backend(tube.problem, MassSpringParameters{});
-  backend.set_positions(tube.start_positions());
-  const StepReport report = backend.solve(LoadStep{0, 1.05, false});
-  const SurfaceState s = backend.state();
+  const SettledTube settled = settle_tube_at(1.05);
+  const StepReport& report = settled.report;
+  const SurfaceState& s = settled.state;
   double largest_N = 0.0, contact_sum_N = 0.0;
   long in_contact = 0;
   for (std::size_t v = 0; v < s.size(); ++v) {
