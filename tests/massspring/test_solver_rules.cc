@@ -49,6 +49,20 @@ SettledTube settle_tube_at(double alpha) {
   return settled;
 }
 
+// The tube on the cylinder at alpha 1.3, held by friction 0.3 with the case files' default
+// tangential penalty (equal to the normal one).
+void hold_by_friction_at_1_3(test::TubeOnCylinder& tube) {
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  tube.problem.friction_coefficient = 0.3;
+  tube.problem.tangential_stiffness_Pa_per_m = tube.problem.contact_stiffness_Pa_per_m;
+}
+
+// The tube's weight from outside the code: rest area (2 panels of 0.157 m x the height) x areal
+// density x standard gravity.
+double weight_of_N(const test::TubeOnCylinder& tube) {
+  return 2 * 0.157 * test::TubeOnCylinder::height_m * tube.fabric.areal_density_kg_per_m2 * 9.80665;
+}
+
 TEST(MassSpringSolver, StableStateBalancesInternalAndContactForce) {
   const SettledTube settled = settle_tube_at(1.3);
   const StepReport& report = settled.report;
@@ -109,11 +123,8 @@ TEST(MassSpringSolver, CoarseSettleTakesTheFacetedBodysNetForceRule) {
   // one, the weight from outside the code (rest area x areal density x standard gravity); the
   // state it stops at has its net force below that.
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
-  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
-  tube.problem.friction_coefficient = 0.3;
-  tube.problem.tangential_stiffness_Pa_per_m = tube.problem.contact_stiffness_Pa_per_m;
-  const double weight_N =
-      2 * 0.157 * test::TubeOnCylinder::height_m * tube.fabric.areal_density_kg_per_m2 * 9.80665;
+  hold_by_friction_at_1_3(tube);
+  const double weight_N = weight_of_N(tube);
   CoarseSettle rule;
   rule.relative_tolerance = 1e-2;
   const MassSpringDressingStage stage;
@@ -169,12 +180,8 @@ TEST(MassSpringSolver, NetForceToleranceHoldsTheSettleUntilTheGarmentIsBalancedA
   // below 0.1 % of the weight, the weight from outside the code: rest area (2 panels of 0.157
   // x 0.24 m) x areal density x standard gravity.
   test::TubeOnCylinder tube(0.157, MeshSpacing{});
-  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
-  tube.problem.friction_coefficient = 0.3;
-  // The case files' default: the tangential penalty equal to the normal one.
-  tube.problem.tangential_stiffness_Pa_per_m = tube.problem.contact_stiffness_Pa_per_m;
-  const double weight_N =
-      2 * 0.157 * test::TubeOnCylinder::height_m * tube.fabric.areal_density_kg_per_m2 * 9.80665;
+  hold_by_friction_at_1_3(tube);
+  const double weight_N = weight_of_N(tube);
   auto net_force_after = [&](double net_force_tolerance, StepReport& report) {
     MassSpringParameters parameters;
     parameters.stop.norm = StopNorm::rms;
