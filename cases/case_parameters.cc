@@ -8,6 +8,7 @@
 #include "core/backend_registry.h"
 #include "core/garment.h"
 #include "core/number_text.h"
+#include "core/thread_count.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -428,6 +429,13 @@ void declare_case_parameters(ParameterHandler& prm) {
   prm.declare_entry("Backend", "massspring", Patterns::Selection(registry.names_joined("|")),
                     "The cloth solver: massspring (the paper's particle model with RK4) or fem "
                     "(a finite-element membrane solved by Newton's method).");
+  prm.declare_entry("Threads", "auto", Patterns::Anything(),
+                    "Threads the mass-spring backend shares a frame's body queries out to (one "
+                    "per garment vertex, on a body mesh; an analytic body's queries stay on one "
+                    "thread): the same results to the last bit with any number "
+                    "(docs/performance-bodies.md, 'Threads'). 1: one thread. auto or 0: one per "
+                    "rank under MPI with more than one rank, else OMP_NUM_THREADS when set, else "
+                    "the cores this process may run on.");
   declare_stop_rule(prm);
   prm.leave_subsection();
   for (const BackendEntry& entry : registry.entries()) {
@@ -541,6 +549,7 @@ CaseParameters parse_case_parameters(ParameterHandler& prm, const std::string& c
 
   prm.enter_subsection("Solver");
   c.backend = prm.get("Backend");
+  c.threads = parse_threads(prm.get("Threads"));
   prm.leave_subsection();
   c.stop_rule = parse_stop_rule(prm);
   for (const BackendEntry& entry : backend_registry().entries())

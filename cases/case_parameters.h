@@ -167,6 +167,7 @@ struct CaseParameters {
   std::vector<NamedMeasurement> measurements;
   OutputSettings output;
   std::string backend = "massspring";
+  int threads = 0;  // Solver/Threads: 0 automatic (core/thread_count.h)
   // The stop rule and gap tolerance of either backend (Solver subsection).
   StopRule stop_rule;
 };

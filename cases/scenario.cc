@@ -4,6 +4,9 @@
 #include "contact/penalty_contact.h"
 #include "core/constrained_directions.h"
 #include "core/memory_budget.h"
+#include "core/thread_count.h"
+
+#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +17,16 @@
 namespace tightfit {
 
 namespace {
+
+// The ranks of the run: 1 where MPI has not been started (a test, a serial driver).
+int run_ranks() {
+  int started = 0;
+  MPI_Initialized(&started);
+  if (!started) return 1;
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  return ranks;
+}
 
 // Constraints/Held groups and Fixed groups on the garment's vertex groups. With `no_direction`,
 // held groups with no direction to hold along are left out and it is set, instead of refused.
@@ -133,6 +146,7 @@ std::unique_ptr<Scenario> make_scenario(const CaseParameters& parameters) {
   p.constraints =
       make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line, &no_direction);
   p.gravity_m_per_s2 = -parameters.protocol.gravity_m_per_s2 * parameters.protocol.up.normalized();
+  p.threads = threads_for_run(parameters.threads, run_ranks());
   s.start_positions_m = parameters.placement.place(s);
   if ((!cut_along_line && s.garment_line) || no_direction)
     p.constraints = make_constraints(parameters.constraints, s.mesh, *s.body, s.garment_line);

@@ -50,6 +50,9 @@ struct Problem {
   std::vector<VertexConstraint> constraints;
   // Gravity when a load step turns it on, m/s^2.
   Vec3 gravity_m_per_s2 = Vec3(0.0, 0.0, -9.81);
+  // The threads a backend may share its per-vertex body queries out to (>= 1; Solver/Threads,
+  // resolved by core/thread_count.h): the answers are the same with any number.
+  int threads = 1;
 };
 
 struct LoadStep {

@@ -3,6 +3,7 @@
 #include "core/load_step_report.h"
 
 #include "bodies/rigid_body.h"
+#include "contact/body_query_pool.h"
 #include "contact/nodal_contact.h"
 #include "contact/penalty_contact.h"
 #include "contact/residual_location.h"
@@ -73,6 +74,8 @@ MassSpringBackend::MassSpringBackend(const Problem& problem, const MassSpringPar
   friction_ = FrictionAnchors(problem_.friction_coefficient, problem_.tangential_stiffness_Pa_per_m,
                               rest_vertex_area_m2_);
   force_.assign(n, Vec3::Zero());
+  contact_N_.assign(n, Vec3::Zero());
+  pool_ = body_query_pool(problem_.body, problem_.threads);
   near_.assign(n, NearFaces{});
   asked_at_m_.assign(n, Vec3::Zero());
   clearance_m_.assign(n, 0.0);
@@ -178,22 +181,32 @@ Vec3 MassSpringBackend::contact_force_N(std::size_t i, const Vec3& x, bool* slip
   return f;
 }
 
+void MassSpringBackend::contact_forces(const std::vector<Vec3>& x, bool carried) const {
+  for_each_part(pool_.get(), x.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      contact_N_[i] = contact_force_N(i, x[i], nullptr, carried);
+  });
+}
+
 int MassSpringBackend::commit_friction_anchors() {
   if (!friction_.active() || !problem_.body) return 0;
-  int slipping = 0;
   accepted_friction_N_.assign(x_.size(), Vec3::Zero());
-  for (std::size_t i = 0; i < x_.size(); ++i) {
-    const SurfacePoint s = problem_.body->query(x_[i]);
-    const double lambda_N = contact_multiplier_N(
-        multiplier_N_[i], problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i],
-        s.signed_distance_m);
-    const FrictionResponse r = friction_.response(int(i), *problem_.body, x_[i], s, lambda_N);
-    friction_.commit(int(i), r);
-    accepted_friction_N_[i] = r.force_N;
-    slipping += r.slipping;
-  }
+  std::vector<char> slips(x_.size(), 0);
+  // Each vertex commits its own anchor (FrictionAnchors::commit), read by no other vertex.
+  for_each_part(pool_.get(), x_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const SurfacePoint s = problem_.body->query(x_[i]);
+      const double lambda_N = contact_multiplier_N(
+          multiplier_N_[i], problem_.contact_stiffness_Pa_per_m * rest_vertex_area_m2_[i],
+          s.signed_distance_m);
+      const FrictionResponse r = friction_.response(int(i), *problem_.body, x_[i], s, lambda_N);
+      friction_.commit(int(i), r);
+      accepted_friction_N_[i] = r.force_N;
+      slips[i] = r.slipping;
+    }
+  });
   friction_committed_ = true;
-  return slipping;
+  return int(std::count(slips.begin(), slips.end(), 1));
 }
 
 void MassSpringBackend::internal_forces(const std::vector<Vec3>& x,
@@ -214,9 +227,10 @@ double MassSpringBackend::residual_forces(const std::vector<Vec3>& x, bool gravi
   largest_multiplier_change_N_ = 0.0;
   double contact_load_N = 0.0;  // the normal contact forces' sum, over n_in_contact vertices
   long n_in_contact = 0;
+  if (body && k > 0) contact_forces(x, carried);
   for (std::size_t i = 0; i < n; ++i) {
     if (body && k > 0) {
-      force[i] += contact_force_N(i, x[i], nullptr, carried);
+      force[i] += contact_N_[i];
       largest_multiplier_change_N_ =
           std::max(largest_multiplier_change_N_, multiplier_change_N_[i]);
       contact_load_N += normal_force_N_[i];
@@ -502,8 +516,12 @@ double MassSpringBackend::contact_penetration_m(bool update_multipliers, int* in
   const RigidBody* body = problem_.body;
   const double k = problem_.contact_stiffness_Pa_per_m;
   if (!body || !(k > 0)) return penetration_m;
+  std::vector<double> gaps_m(x_.size());
+  for_each_part(pool_.get(), x_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) gaps_m[i] = body->query(x_[i]).signed_distance_m;
+  });
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    const double gap_m = body->query(x_[i]).signed_distance_m;
+    const double gap_m = gaps_m[i];
     const double lambda_N =
         contact_multiplier_N(multiplier_N_[i], k * rest_vertex_area_m2_[i], gap_m);
     if (update_multipliers) multiplier_N_[i] = lambda_N;

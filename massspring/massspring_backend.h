@@ -23,6 +23,7 @@
 #include "core/constrained_directions.h"
 #include "core/held_turn.h"
 #include "core/load_step.h"
+#include "core/worker_pool.h"
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
@@ -143,6 +144,13 @@ class MassSpringBackend final : public Backend {
   // from the frame's first stage (carried_contact_, below) instead of a query.
   Vec3 contact_force_N(std::size_t i, const Vec3& x, bool* slipping = nullptr,
                        bool carried = false) const;
+  // contact_force_N of every particle at x into contact_N_, the particles shared out to the
+  // pool's threads (Problem::threads) on a body whose queries are costly. Each particle's
+  // evaluation reads and writes only its own entries of the per-particle state below (its near
+  // faces, clearance, carried answer, damper directions, multiplier change, normal force,
+  // friction anchor and the body's per-thread scratch), and the caller sums in particle order:
+  // the same forces, to the last bit, with any number of threads.
+  void contact_forces(const std::vector<Vec3>& x, bool carried) const;
   // Keeps the friction anchors of the accepted state x_; returns how many vertices slip there.
   int commit_friction_anchors();
 
@@ -204,6 +212,10 @@ class MassSpringBackend final : public Backend {
 
   // Force work space for the residual outside the frames, allocated once.
   mutable std::vector<Vec3> force_;
+  // Each particle's contact force at the last residual, N (contact_forces).
+  mutable std::vector<Vec3> contact_N_;
+  // The threads the body queries are shared out to (contact/body_query_pool.h; null: this one).
+  std::unique_ptr<WorkerPool> pool_;
   // Contact queries (contact_force_N), kept per particle between the frames of a step: the
   // body's near faces (RigidBody::query_near), and where the particle was last asked and its
   // signed distance there. The distance changes no faster than the point moves, so while a

@@ -1,6 +1,7 @@
 #include "massspring/open_seam_garment.h"
 
 #include "bodies/rigid_body.h"
+#include "contact/body_query_pool.h"
 #include "contact/penalty_contact.h"
 #include "massspring/lumped_mass.h"
 #include "massspring/stable_time_step.h"
@@ -44,11 +45,15 @@ OpenSeamGarment::OpenSeamGarment(const Problem& problem, const MassSpringParamet
     buffer->assign(panels_.mesh.n_vertices, Vec3::Zero());
   clearance_m_.assign(panels_.mesh.n_vertices, 0.0);
   near_.assign(panels_.mesh.n_vertices, NearFaces{});
+  contact_N_.assign(panels_.mesh.n_vertices, Vec3::Zero());
+  asked_.assign(panels_.mesh.n_vertices, 0);
+  set_body(body_);
 }
 
 void OpenSeamGarment::set_body(const RigidBody* body) {
   body_ = body;
   std::fill(clearance_m_.begin(), clearance_m_.end(), 0.0);
+  if (!pool_) pool_ = body_query_pool(body_, problem_.threads);
 }
 
 void OpenSeamGarment::body_moved(double bound_m) {
@@ -85,13 +90,20 @@ void OpenSeamGarment::forces(const std::vector<Vec3>& x, bool gravity_on,
   hinges_.add_forces(x, force);
   seams_.add_forces(x, force);
   const double k = problem_.contact_stiffness_Pa_per_m;
+  if (body_ && k > 0)
+    for_each_part(body_->costly_queries() ? pool_.get() : nullptr, x.size(),
+                  [&](std::size_t begin, std::size_t end) {
+                    for (std::size_t i = begin; i < end; ++i) {
+                      asked_[i] = !((x[i] - asked_at_m_[i]).norm() < clearance_m_[i]);
+                      if (!asked_[i]) continue;
+                      const SurfacePoint s = body_->query_near(x[i], near_[i]);
+                      asked_at_m_[i] = x[i];
+                      clearance_m_[i] = clearance_factor_ * s.signed_distance_m;
+                      contact_N_[i] = penalty_force_N(s, k, rest_vertex_area_m2_[i]);
+                    }
+                  });
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (body_ && k > 0 && !((x[i] - asked_at_m_[i]).norm() < clearance_m_[i])) {
-      const SurfacePoint s = body_->query_near(x[i], near_[i]);
-      asked_at_m_[i] = x[i];
-      clearance_m_[i] = clearance_factor_ * s.signed_distance_m;
-      force[i] += penalty_force_N(s, k, rest_vertex_area_m2_[i]);
-    }
+    if (body_ && k > 0 && asked_[i]) force[i] += contact_N_[i];
     if (gravity_on) force[i] += mass_kg_[i] * problem_.gravity_m_per_s2;
     if (constrained_.constrained(i)) constrained_.remove_constrained(i, force[i]);
   }

@@ -9,6 +9,7 @@
 #include "bodies/rigid_body.h"
 #include "core/backend.h"
 #include "core/constrained_directions.h"
+#include "core/worker_pool.h"
 #include "massspring/bending_hinges.h"
 #include "massspring/damped_rk4.h"
 #include "massspring/massspring_parameters.h"
@@ -17,6 +18,7 @@
 #include "massspring/unwelded_panels.h"
 
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace tightfit {
@@ -107,6 +109,13 @@ class OpenSeamGarment {
   // The body's near faces of each particle (RigidBody::query_near).
   mutable std::vector<NearFaces> near_;
   double clearance_factor_ = 1.0;
+  // Each particle's contact force at the last forces() and whether it was asked: the queries
+  // are shared out to Problem::threads threads on a costly body, each particle writing only its
+  // own entries here and above, and summed in particle order (the same forces with any number
+  // of threads). The pool is made with the first costly body (contact/body_query_pool.h).
+  mutable std::vector<Vec3> contact_N_;
+  mutable std::vector<char> asked_;
+  std::unique_ptr<WorkerPool> pool_;
 };
 
 }  // namespace tightfit
