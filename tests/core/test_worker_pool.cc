@@ -16,7 +16,7 @@ namespace tightfit {
 namespace {
 
 TEST(WorkerPool, EveryItemOnceInConsecutiveParts) {
-  for (int threads : {1, 2, 3, 5})
+  for (int threads : {1, 2, 3, 5}) {
     for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(7), std::size_t(33),
                           std::size_t(1000), std::size_t(4097)}) {
       WorkerPool pool(threads);
@@ -36,6 +36,7 @@ TEST(WorkerPool, EveryItemOnceInConsecutiveParts) {
       EXPECT_LE(parts.load(), 16L * threads);
       if (threads == 1 && n > 0) EXPECT_EQ(parts.load(), 1);
     }
+  }
 }
 
 TEST(WorkerPool, ManyShortLoopsInARow) {
