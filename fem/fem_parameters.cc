@@ -170,8 +170,7 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "(K + sigma I) dx = -R once, with no line search, sigma falling as the "
                     "residual falls; at the stop rule Newton's contact rounds take over. 0: none "
                     "(the default).");
-  prm.declare_entry("Pseudo time shift", std::to_string(d.pseudo_time_initial_shift),
-                    Double(1e-8, 1e6),
+  prm.declare_entry("Pseudo time shift", "0.1", Double(1e-8, 1e6),
                     "The first pseudo time step's sigma over the law's stiffness scale Y "
                     "(dimensionless): the inverse of the first pseudo time step, in the damping's "
                     "units.");
