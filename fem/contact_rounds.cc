@@ -3,6 +3,7 @@
 #include "contact/penalty_contact.h"
 #include "core/load_step_report.h"
 #include "fem/contact_set_prediction.h"
+#include "fem/pseudo_transient.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -131,14 +132,20 @@ double ContactRounds::load_threshold_N(const NewtonSolver& newton, const DofVect
 
 MultiplierRound ContactRounds::settle(const LoadStep& step, NewtonSolver& newton,
                                       const NewtonSolver::Assembler& assemble, NewtonSystem& system,
-                                      DofVector& x, NewtonLog& log) const {
+                                      DofVector& x, NewtonLog& log, bool pseudo_transient) {
   const std::size_t first = log.residual_N.size();
   MultiplierRound round;
   // The rule at the start's contact load, then at the load where the solve stopped: the
   // solves go on while the residual there is above it (the load grows as the garment settles
   // onto the body; two more solves at most, each starting where the last stopped).
   newton.set_load_tolerance_N(load_threshold_N(newton, x));
-  round.iterations = newton.solve(step, assemble, system, x, log);
+  if (pseudo_transient) {
+    PseudoTransientSettings settings;
+    settings.max_steps = parameters_.max_pseudo_time_steps;
+    settings.initial_shift = parameters_.pseudo_time_initial_shift;
+    round.iterations = pseudo_transient_settle(step, newton, assemble, system, x, log, settings);
+  }
+  round.iterations += newton.solve(step, assemble, system, x, log);
   for (int pass = 0; pass < 2 && !log.residual_N.empty(); ++pass) {
     const double threshold_N = load_threshold_N(newton, x);
     if (!(log.residual_N.back() > threshold_N)) break;
@@ -164,7 +171,13 @@ void ContactRounds::solve(const LoadStep& step, NewtonSolver& newton,
   // force the state just solved is in equilibrium with once updated: no settle after the last
   // update.
   MultiplierRounds rounds;
-  rounds.settle = [&] { return settle(step, newton, assemble, system, x, log); };
+  // With friction the load step opens with pseudo-transient steps (fem/pseudo_transient.h).
+  bool pseudo_transient = nodes_.friction.active() && parameters_.max_pseudo_time_steps > 0;
+  rounds.settle = [&] {
+    const bool first_round = pseudo_transient;
+    pseudo_transient = false;
+    return settle(step, newton, assemble, system, x, log, first_round);
+  };
   rounds.read_gap = [&](bool, int* count) { return update_multipliers(x, count); };
   rounds.max_updates = parameters_.max_augmented_lagrangian_iterations;
   rounds.gap_tolerance_m = parameters_.stop.gap_tolerance_m;

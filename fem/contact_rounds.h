@@ -63,9 +63,10 @@ class ContactRounds {
   // in contact, and the backend's own rule, whichever is the tighter, N.
   double load_threshold_N(const NewtonSolver& newton, const DofVector& x) const;
   // Newton at fixed multipliers to the stop rule at the contact load where it stops.
+  // With `pseudo_transient`, the pseudo-transient steps first (fem/pseudo_transient.h).
   MultiplierRound settle(const LoadStep& step, NewtonSolver& newton,
                          const NewtonSolver::Assembler& assemble, NewtonSystem& system,
-                         DofVector& x, NewtonLog& log) const;
+                         DofVector& x, NewtonLog& log, bool pseudo_transient);
   // Keeps each node's anchor of the accepted state x (after update_multipliers, whose
   // multipliers are the normal forces x was in equilibrium with) and its friction force.
   void commit_friction(const DofVector& x);

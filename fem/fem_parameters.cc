@@ -162,6 +162,18 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "theta, dimensionless. The shift vanishes with the residual (quadratic "
                     "convergence is kept) and lets Newton through states where the tangent is "
                     "singular, such as a tube touching the body at zero tension. 0 turns it off.");
+  prm.declare_entry("Pseudo time steps", std::to_string(d.max_pseudo_time_steps),
+                    Integer(0, 100000),
+                    "With friction (Contact/Friction coefficient > 0): at most this many "
+                    "pseudo-transient steps open each load step, before Newton's rounds "
+                    "(docs/backends.md, \"Pseudo-transient continuation\"; count). Each solves "
+                    "(K + sigma I) dx = -R once, with no line search, sigma falling as the "
+                    "residual falls; at the stop rule Newton's contact rounds take over. 0: none "
+                    "(the default).");
+  prm.declare_entry("Pseudo time shift", "0.1", Double(1e-8, 1e6),
+                    "The first pseudo time step's sigma over the law's stiffness scale Y "
+                    "(dimensionless): the inverse of the first pseudo time step, in the damping's "
+                    "units.");
   prm.declare_entry("Slack treatment", to_string(d.slack_treatment),
                     Selection("none|tension field"),
                     "How the membrane treats compression. 'none': the law as given, as stiff in "
@@ -233,6 +245,8 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   tangent_shift_N_per_m = prm.get_double("Tangent shift");
   residual_shift_factor = prm.get_double("Residual shift factor");
   compression_stiffness_fraction = prm.get_double("Compression stiffness fraction");
+  max_pseudo_time_steps = prm.get_integer("Pseudo time steps");
+  pseudo_time_initial_shift = prm.get_double("Pseudo time shift");
   const std::string slack = prm.get("Slack treatment");
   if (slack == to_string(SlackTreatment::none))
     slack_treatment = SlackTreatment::none;

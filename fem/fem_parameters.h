@@ -86,6 +86,12 @@ struct FemParameters {
   // Levenberg-Marquardt shift mu = theta |R|_max / h (N/m) of each Newton system; theta here,
   // dimensionless. Zero turns it off.
   double residual_shift_factor = 1.0;
+  // Pseudo-transient continuation before Newton's rounds, with friction (fem/pseudo_transient.h):
+  // at most this many pseudo time steps (0: none, the default: the coarse top took 1222 where
+  // the mass-spring settle is three times cheaper, docs/performance-bodies.md), the first
+  // shifted by pseudo_time_initial_shift times the stiffness scale.
+  int max_pseudo_time_steps = 0;
+  double pseudo_time_initial_shift = 0.1;
   SlackTreatment slack_treatment = SlackTreatment::none;
   // Under the tension field, the fraction of the law's own stiffness kept where the fabric is
   // wrinkled or slack (dimensionless): it keeps one equilibrium where nothing pulls across.

@@ -158,6 +158,16 @@ int NewtonSolver::solve_linear_system(const LoadStep& step, const DofVector& x,
   }
 }
 
+void NewtonSolver::solve_shifted(const LoadStep& step, const DofVector& x, NewtonSystem& system,
+                                 double shift_N_per_m, NewtonLog& log, DofVector& increment) {
+  krylov_tolerance_ = parameters_.linear_tolerance;
+  if (shift_N_per_m > 0.0) MatShift(system.tangent.petsc_matrix(), shift_N_per_m);
+  log.krylov_iterations.push_back(solve_linear_system(step, x, system, log));
+  ghosted_increment(system, increment);
+  last_increment_ = increment;
+  has_increment_ = true;
+}
+
 double NewtonSolver::owned_dot(const NewtonSystem& system, const DofVector& increment) const {
   double sum = 0.0;
   for (const GlobalDof i : pattern_.owned_dofs()) sum += system.rhs(i) * increment(i);

@@ -105,10 +105,21 @@ class NewtonSolver {
   int solve(const LoadStep& step, const Assembler& assemble, NewtonSystem& system, DofVector& x,
             NewtonLog& log);
 
- private:
   // The stop rule's size of rhs over every rank, N: the largest |rhs_i| h / h_k(i), or the rms
   // over the nodes (see the constructor).
   double scaled_residual_N(const NewtonSystem& system) const;
+  // One linear solve of (K + shift I) increment = rhs with the tangent assembled at x (shifted
+  // in place): the increment on this rank's DoFs and ghosts, constraints distributed
+  // (fem/pseudo_transient.h).
+  void solve_shifted(const LoadStep& step, const DofVector& x, NewtonSystem& system,
+                     double shift_N_per_m, NewtonLog& log, DofVector& increment);
+  double stiffness_scale_N_per_m() const { return stiffness_scale_N_per_m_; }
+  double mean_edge_m() const { return pattern_.mean_edge_m(); }
+  // The residual tolerance the next solve() stops at, N (the tighter of the backend's and the
+  // contact load's rules).
+  double solve_tolerance_N() const { return std::min(tolerance_N_, load_tolerance_N_); }
+
+ private:
   // Where the residual at x sits (contact/residual_location.h) and the history of the step's
   // iterations, for the message of a failed step.
   std::string failure_details(const NewtonSystem& system, const DofVector& x,

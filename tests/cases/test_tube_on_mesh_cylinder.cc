@@ -17,6 +17,7 @@
 #include "tests/cases/body_case.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace tightfit {
 namespace {
@@ -144,28 +145,36 @@ TEST(TubeOnMeshCylinderImplicit, HeldTubeReachesRk4sPressureByTheImplicitRoute) 
   EXPECT_NEAR(p_implicit / p_rk4, 1.0, 2.8e-4);
 }
 
-TEST(TubeOnMeshCylinderImplicit, FrictionHeldTubeUnderGravitySettlesByNewtonAlone) {
-  // What the tops have, on a small body case: the faceted 48-sided prism standing upright, the
-  // tube free (no held direction) under its weight, held by friction (0.3), every settle entry
-  // at the faceted body's defaults (the rms stop rule and the net-force limit). The implicit
-  // route runs Newton alone here (no RK4 approach with friction) on the projected tangent
-  // (docs/backends.md, "The implicit route on the tops") from the tube's placement.
+// What the tops have, on a small body case: the faceted 48-sided prism standing upright, the
+// tube free (no held direction) under its weight, held by friction (0.3), every settle entry at
+// the faceted body's defaults (the rms stop rule and the net-force limit), from the tube's
+// placement; `entries` adds the backend's own.
+testing::BodyCaseRun friction_held_tube_under_gravity(const std::string& obj_name,
+                                                      const std::string& backend,
+                                                      const std::vector<std::string>& entries) {
   const double rho = kAlpha * kRestRadius;
-  const std::string obj = write_prism("mesh_cylinder_friction_implicit.obj", rho);
+  const std::string obj = write_prism(obj_name, rho);
+  std::vector<std::string> settings = tube_settings();
+  for (const std::string& entry : std::vector<std::string>{
+           "Body/Kind=mesh", "Body/Mesh/File=" + obj, std::string("Body/Mesh/Up axis=+z"),
+           std::string("Body/Mesh/Contact surface=faceted"),
+           std::string("Placement/Kind=tube round axis"),
+           std::string("Placement/Tube round axis/Axis=0,0,1"),
+           setting("Placement/Tube round axis/Radius", 1.005 * rho),
+           std::string("Protocol/Final alpha=1"),
+           std::string("Protocol/Gravity while settling=true"),
+           std::string("Contact/Friction coefficient=0.3")})
+    settings.push_back(entry);
+  settings.insert(settings.end(), entries.begin(), entries.end());
+  return run_body_case(settings, backend);
+}
+
+TEST(TubeOnMeshCylinderImplicit, FrictionHeldTubeUnderGravitySettlesByNewtonAlone) {
+  // The implicit route runs Newton alone here (no RK4 approach with friction) on the projected
+  // tangent (docs/backends.md, "The implicit route on the tops").
   auto hung = [&](const std::string& integrator) {
-    std::vector<std::string> settings = tube_settings();
-    for (const std::string& entry : std::vector<std::string>{
-             "Body/Kind=mesh", "Body/Mesh/File=" + obj, std::string("Body/Mesh/Up axis=+z"),
-             std::string("Body/Mesh/Contact surface=faceted"),
-             std::string("Placement/Kind=tube round axis"),
-             std::string("Placement/Tube round axis/Axis=0,0,1"),
-             setting("Placement/Tube round axis/Radius", 1.005 * rho),
-             std::string("Protocol/Final alpha=1"),
-             std::string("Protocol/Gravity while settling=true"),
-             std::string("Contact/Friction coefficient=0.3"),
-             "Mass spring/Integrator=" + integrator})
-      settings.push_back(entry);
-    return run_body_case(settings, "massspring");
+    return friction_held_tube_under_gravity("mesh_cylinder_friction_implicit.obj", "massspring",
+                                            {"Mass spring/Integrator=" + integrator});
   };
   const testing::BodyCaseRun rk4 = hung("rk4"), implicit = hung("implicit");
   ASSERT_TRUE(rk4.run.completed) << rk4.run.failure << "\n" << rk4.log;
@@ -175,6 +184,27 @@ TEST(TubeOnMeshCylinderImplicit, FrictionHeldTubeUnderGravitySettlesByNewtonAlon
   // error by about that fraction; measured 1.3e-3 apart (864.38 Pa after 29 RK4 frames, 863.22
   // Pa after 7 Newton iterations); bound 3e-3, the rule's own size.
   EXPECT_NEAR(p_implicit / p_rk4, 1.0, 3e-3) << "rk4 " << p_rk4 << " Pa, implicit " << p_implicit;
+}
+
+TEST(TubeOnMeshCylinderFe, FrictionHeldTubeUnderGravitySettlesByPseudoTime) {
+  // The same tube on the FE backend, its load step opened by pseudo time steps
+  // (fem/pseudo_transient.h) that Newton's contact rounds end, to the shared stop rule alone (as
+  // the tops' cases set: Residual tolerance = 0), every other Finite elements entry at its
+  // default. Against the mass-spring backend's RK4 settle of the same case.
+  const testing::BodyCaseRun rk4 =
+      friction_held_tube_under_gravity("mesh_cylinder_friction_rk4.obj", "massspring", {});
+  const testing::BodyCaseRun fe = friction_held_tube_under_gravity(
+      "mesh_cylinder_friction_fe.obj", "fem",
+      {"Finite elements/Pseudo time steps=2000", "Finite elements/Residual tolerance=0"});
+  ASSERT_TRUE(rk4.run.completed) << rk4.run.failure << "\n" << rk4.log;
+  ASSERT_TRUE(fe.run.completed) << fe.run.failure << "\n" << fe.log;
+  const double p_rk4 = rk4.last().p_mean_Pa(), p_fe = fe.last().p_mean_Pa();
+  std::printf("friction-held tube: rk4 %.3f Pa, fem %.3f Pa (%+.2e)\n%s\n", p_rk4, p_fe,
+              p_fe / p_rk4 - 1, fe.last().report.text().c_str());
+  // Both meet the rms rule at 3e-3 of the tension scale, which bounds each mean pressure's error
+  // by about that fraction; measured 5.7e-4 apart (864.376 Pa after RK4, 863.887 Pa after 12
+  // pseudo time steps and 1 Newton iteration); bound 3e-3, the rule's own size.
+  EXPECT_NEAR(p_fe / p_rk4, 1.0, 3e-3) << "rk4 " << p_rk4 << " Pa, fem " << p_fe;
 }
 
 }  // namespace
