@@ -299,6 +299,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
   // of the flat normal m0 (eq. F1 in the header), with what its weight needs.
   constexpr double screen_width = screen_cosine_in - screen_cosine_out;
   std::size_t count = 0;
+  bool screened = false;  // some vertex whose support holds x screened out, fully or partly
   double* slot = terms.term(0);
   // The vertices a few places ahead asked for early: a query's vertices lie scattered over the
   // quadrics' array, and their loads, not the arithmetic, set the pace of this loop.
@@ -329,6 +330,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
     // A vertex the screen drops adds nothing: it faces more than 160 degrees from m0, and m
     // lies within a few degrees of m0 wherever the flat surface has an answer (both are the
     // surface's normal), beyond the 120 degrees of the facing factor (F3).
+    screened |= r < 1.0 && F.value < 1.0;
     if (!(r < 1.0 && F.value > 0.0)) continue;
     V[count] = i;
     double* const t = slot;
@@ -516,6 +518,7 @@ BlendedQuadricField::Value BlendedQuadricField::evaluate_impl(const Vec3& x, con
     }
   }
   Value f;
+  f.every_vertex_facing = !(screened || partly_facing || not_facing);
   f.facing_normal = m;
   f.weight_sum = total(weight_sum);
   if constexpr (derivatives)

@@ -56,6 +56,10 @@ class BlendedQuadricField {
     Vec3 gradient = Vec3::Zero();       // d phi / dx
     Mat3 hessian_per_m = Mat3::Zero();  // d2 phi / dx2, symmetric
     Vec3 facing_normal = Vec3::Zero();  // m of (F2), which the facing factors read
+    // Every vertex whose support holds x passes the screen (F1) and faces m (F3) fully: the
+    // field is the plain blend of the quadrics there, without the factors' steeper derivatives
+    // (or m0's kinks, through the screen).
+    bool every_vertex_facing = true;
   };
   // The field at x: every vertex whose support holds x adds its quadric, its weight scaled by
   // a facing factor, so that the other side of a thin gap (the inner thigh across the crotch)

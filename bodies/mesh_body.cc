@@ -122,6 +122,9 @@ SurfacePoint MeshBody::query(const Vec3& x) const {
 }
 
 SurfacePoint MeshBody::query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const {
+  if (!parts.closest_point && !parts.location && near.expansion_shape == shape_id_ &&
+      (x - near.expanded_at_m).norm() <= expansion_reach_m())
+    return expanded_answer(x, near);
   if (near.shape == shape_id_ && (x - near.centre_m).norm() <= near.reach_m) {
     const TriangleBvh::Hit hit = bvh_.closest_among(x, near.faces, near.last_face);
     near.last_face = hit.triangle;
@@ -149,14 +152,43 @@ SurfacePoint MeshBody::faceted_near(const Vec3& x, const NearFaces* near) const 
 
 SurfacePoint MeshBody::finished(const Vec3& x, SurfacePoint s, QueryParts parts,
                                 NearFaces* near) const {
-  if (contact_surface_ == MeshBodyOptions::ContactSurface::smooth) {
-    smooth_query(x, s, parts.closest_point, near);  // the closest point on the skin's level set
-    if (parts.location) s.location = smooth_location(s.closest_point_m, s.location.face);
-  } else {
+  if (contact_surface_ == MeshBodyOptions::ContactSurface::faceted) {
     // The skin: the surface moved out along the normal.
     s.closest_point_m += skin_offset_m_ * s.outward_normal;
+    s.signed_distance_m -= skin_offset_m_;
+    return s;
   }
+  // A frame's force (no closest point, no location) is kept for its expansion where the blend
+  // alone answers; elsewhere (half an edge off the surface) the faceted gap, only C0 across the
+  // faces' edges, is blended in, and nothing is kept.
+  const bool keep = near && !parts.closest_point && !parts.location;
+  Mat3 gap_hessian = Mat3::Zero();
+  // The closest point on the skin's level set.
+  const bool covered = smooth_query(x, s, parts.closest_point, near, keep ? &gap_hessian : nullptr);
+  if (parts.location) s.location = smooth_location(s.closest_point_m, s.location.face);
   s.signed_distance_m -= skin_offset_m_;
+  if (keep) {
+    // Only where the normal turns by at most a milliradian over the reach (a radius of curvature
+    // above 1 cm at 10 micrometres): where the field's gradient shrinks (a part thinner than the
+    // blend's support, a finger), Hg = H / |grad phi| grows and the expansion's d^2 term with it.
+    const bool gentle = gap_hessian.norm() * expansion_reach_m() <= 1e-3;
+    near->expansion_shape = covered && gentle ? shape_id_ : 0;
+    near->expanded_at_m = x;
+    near->expanded = s;
+    near->expanded_gap_hessian_per_m = gap_hessian;
+  }
+  return s;
+}
+
+SurfacePoint MeshBody::expanded_answer(const Vec3& x, const NearFaces& near) const {
+  const Vec3 d = x - near.expanded_at_m;
+  SurfacePoint s = near.expanded;
+  const Vec3 Hd = near.expanded_gap_hessian_per_m * d;
+  s.signed_distance_m += s.gap_gradient.dot(d) + 0.5 * d.dot(Hd);
+  s.gap_gradient += Hd;
+  s.outward_normal = (s.outward_normal + s.normal_derivative_per_m * d).normalized();
+  // As smooth_field's: one Newton step x - g n onto the skin's level set.
+  s.closest_point_m = x - s.signed_distance_m * s.outward_normal;
   return s;
 }
 
@@ -228,17 +260,18 @@ SurfacePoint MeshBody::faceted_answer(const Vec3& x, const TriangleBvh::Hit& hit
 }
 
 Vec3 MeshBody::surface_point_near_m(const SurfaceLocation& location, const NearFaces* near) const {
+  const bool smooth = contact_surface_ == MeshBodyOptions::ContactSurface::smooth;
+  // The anchor's point found before on this shape (NearFaces::anchor_point_m), before anything
+  // else: a frame asks for it at every stage.
+  if (smooth && near && near->anchor_shape == shape_id_ && near->anchor.face == location.face &&
+      near->anchor.coordinates == location.coordinates)
+    return near->anchor_point_m;
   const Triangle& tri = surface_.triangles.at(location.face);
   const Vec3& b = location.coordinates;
   const auto& v = surface_.vertices_m;
   const Vec3 flat = b[0] * v[tri[0]] + b[1] * v[tri[1]] + b[2] * v[tri[2]];
   const Vec3 normal = interpolated_normal(location.face, b);
-  if (contact_surface_ == MeshBodyOptions::ContactSurface::faceted)
-    return flat + skin_offset_m_ * normal;
-  // The anchor's point found before on this shape (NearFaces::anchor_point_m).
-  const bool kept = near && near->anchor_shape == shape_id_ && near->anchor.face == location.face &&
-                    near->anchor.coordinates == location.coordinates;
-  if (kept) return near->anchor_point_m;
+  if (!smooth) return flat + skin_offset_m_ * normal;
   // Out along the interpolated normal to where the smooth gap is the skin's: the inverse of
   // smooth_location, by Newton's method on g(flat + t N) - skin (dg/dt = grad g . N). The first
   // step starts on the anchor's own face, whose closest point is the flat point itself (the

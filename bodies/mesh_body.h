@@ -53,8 +53,17 @@ class MeshBody final : public RigidBody {
   }
   // query_near without the smooth surface's location walk when `parts.location` is off, and
   // without its closest point's further Newton steps when `parts.closest_point` is off (the
-  // faceted answer's closest point and location, and every dn/dx, come with the rest).
+  // faceted answer's closest point and location, and every dn/dx, come with the rest). On the
+  // smooth surface the answer without both (a frame's contact force) is kept in `near`, and a
+  // point within `expansion_reach_m()` of where it was found takes its own from it
+  // (expanded_answer) without the blend.
   SurfacePoint query_parts(const Vec3& x, NearFaces& near, QueryParts parts) const override;
+  // How far a point may move from a kept smooth answer and still be answered by its expansion,
+  // m: a hundredth of the kept faces' reach (about 10 micrometres on the MakeHuman bodies), where
+  // the expansion is off the blend by at most 4.4e-10 m in the gap and 2.5e-6 in the normal
+  // (tests/bodies/test_near_faces.cc).
+  static constexpr double expansion_reach_over_near_reach = 0.01;
+  double expansion_reach_m() const { return expansion_reach_over_near_reach * near_reach_m_; }
   bool costly_queries() const override { return true; }
   DisplayMesh display_mesh() const override;
   Vec3 surface_point_m(const SurfaceLocation& location) const override {
@@ -93,12 +102,22 @@ class MeshBody final : public RigidBody {
   // the field covers x (blended back to the faceted ones as its weights fade, far off the
   // surface), with the closest point on the smooth surface moved out by the skin (the level
   // set g = skin offset); the distance is returned before the skin is taken off.
-  void smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point = true,
-                    const NearFaces* near = nullptr) const;
+  bool smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point = true,
+                    const NearFaces* near = nullptr, Mat3* gap_hessian = nullptr) const;
   // smooth_query's distance, normal and derivatives alone, with the closest point one Newton
   // step x - g n onto the surface; the blend takes `near`'s vertices where x lies within their
-  // reach (the same value as the field's grid gives).
-  void smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* near = nullptr) const;
+  // reach (the same value as the field's grid gives). True where the blend alone answers (the
+  // faceted gap not blended in) and every vertex in it faces fully (no facing factor or screen
+  // between 0 and 1); `gap_hessian` (if given) gets the gap's Hessian where the blend answers.
+  bool smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* near = nullptr,
+                    Mat3* gap_hessian = nullptr) const;
+  // The force's answer at x from the one kept in `near` at x0 = near.expanded_at_m, to second
+  // order in the step d = x - x0 for the gap and first order for the normal:
+  //   g = g0 + grad g0 . d + d^T Hg d / 2,  grad g = grad g0 + Hg d,  n = (n0 + dn/dx d) / |...|,
+  // dn/dx kept (Hg the gap's Hessian at x0, eq. in smooth_field). The smooth field is C2, so
+  // over the few micrometres a vertex moves in a frame the expansion is off the blend by the
+  // field's third derivatives times d^3 (d^2 for the normal): tests/bodies/test_near_faces.cc.
+  SurfacePoint expanded_answer(const Vec3& x, const NearFaces& near) const;
   // The face and barycentric coordinates b of the point y = c(b) + t N(b), c the flat point
   // and N = sum b_i n_i the interpolated vertex normal: the flat surface's coordinates carried
   // out to the smooth one along the normal field, a map that is continuous across edges

@@ -20,9 +20,9 @@ constexpr double faceted_below_weight = 0.05, smooth_above_weight = 0.25;
 
 }  // namespace
 
-void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
-                            const NearFaces* near) const {
-  smooth_field(x, s, near);
+bool MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
+                            const NearFaces* near, Mat3* gap_hessian) const {
+  const bool covered = smooth_field(x, s, near, gap_hessian);
   const double gap = s.signed_distance_m - skin_offset_m_;
   // Newton's steps y <- y - (g(y) - t) n(y) onto the skin's level set g = t: the first is off
   // it by about gap^2 |n^T H n| / 2, the field not being a distance along its normal exactly,
@@ -35,9 +35,11 @@ void MeshBody::smooth_query(const Vec3& x, SurfacePoint& s, bool closest_point,
     y -= (at.signed_distance_m - skin_offset_m_) * at.outward_normal;
   }
   s.closest_point_m = y;
+  return covered;
 }
 
-void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* near) const {
+bool MeshBody::smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* near,
+                            Mat3* gap_hessian) const {
   // The blend's vertices kept for x's neighbourhood, where x lies in it (query_parts keeps them
   // with the near faces).
   const std::vector<int>* candidates =
@@ -49,12 +51,12 @@ void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* nea
       field_.evaluate(x, s.outward_normal, s.normal_derivative_per_m, candidates);
   const double u =
       (f.weight_sum - faceted_below_weight) / (smooth_above_weight - faceted_below_weight);
-  if (u <= 0.0) return;
+  if (u <= 0.0) return false;
   const double m = f.gradient.norm();
-  if (!(m > 1e-6)) return;
+  if (!(m > 1e-6)) return false;
   // The gap g = phi / |grad phi|, a distance near the surface whatever the blend's scale:
   // grad g = n - phi H n / m^2 exactly (n = grad phi / m, grad m = H n), and its Hessian
-  // (H - n (H n)^T - (H n) n^T) / m up to terms of order phi, which vanish on the surface.
+  // Hg = (H - n (H n)^T - (H n) n^T) / m up to terms of order phi, which vanish on the surface.
   const Vec3 n = f.gradient / m, Hn = f.hessian_per_m * n;
   const double g = f.phi_m / m;
   Vec3 gradient = n - f.phi_m * Hn / (m * m);
@@ -68,7 +70,10 @@ void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* nea
   Vec3 normal = n;
   Mat3 normal_derivative = (Mat3::Identity() - n * n.transpose()) * f.hessian_per_m / m;
   double gap = g;
-  if (u < 1.0) {
+  const bool covered = u >= 1.0;
+  if (covered && gap_hessian)
+    *gap_hessian = (f.hessian_per_m - n * Hn.transpose() - Hn * n.transpose()) / m;
+  if (!covered) {
     // Out of contact (half an edge off the surface): the faceted answer blends in, and the
     // normal turns from the field's n to the blended gradient's direction.
     const double S = u * u * u * (10 - 15 * u + 6 * u * u);
@@ -87,6 +92,7 @@ void MeshBody::smooth_field(const Vec3& x, SurfacePoint& s, const NearFaces* nea
   s.outward_normal = normal;
   s.normal_derivative_per_m = normal_derivative;
   s.closest_point_m = x - gap * s.outward_normal;
+  return covered && f.every_vertex_facing;
 }
 
 SurfaceLocation MeshBody::smooth_location(const Vec3& y, int face) const {

@@ -56,6 +56,14 @@ struct NearFaces {
   mutable std::uint64_t anchor_shape = 0;
   mutable SurfaceLocation anchor;
   mutable Vec3 anchor_point_m = Vec3::Zero();
+  // A mesh body's smooth surface: the force's answer (RigidBody::query_parts without closest
+  // point and location) at `expanded_at_m`, with the gap's Hessian there, from which a point that
+  // stays within a few micrometres of it takes its answer by Taylor's expansion instead of the
+  // blend (MeshBody::expanded_answer). `expansion_shape` 0: nothing kept.
+  std::uint64_t expansion_shape = 0;
+  Vec3 expanded_at_m = Vec3::Zero();
+  SurfacePoint expanded;
+  Mat3 expanded_gap_hessian_per_m = Mat3::Zero();
 };
 
 // The parts of a SurfacePoint a caller needs beyond the signed distance, outward normal and
