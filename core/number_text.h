@@ -16,4 +16,9 @@ std::optional<double> whole_number(const std::string& text);
 // a whole number. Throws std::invalid_argument naming `entry` when it is neither.
 std::optional<double> auto_or_number(const std::string& text, const std::string& entry);
 
+// A count entry with an automatic choice (Solver/Threads, Contact set predictions): "auto"
+// (nothing) or the digits of a whole number from 0 to `largest`. Throws std::invalid_argument
+// naming `entry` for anything else ("-1", "2.5", "two", " 2").
+std::optional<int> auto_or_count(const std::string& text, const std::string& entry, int largest);
+
 }  // namespace tightfit

@@ -1,27 +1,18 @@
 #include "core/thread_count.h"
 
+#include "core/number_text.h"
+
 #include <sched.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <stdexcept>
 #include <thread>
 
 namespace tightfit {
 
 int parse_threads(const std::string& text) {
-  if (text == "auto") return 0;
-  std::size_t used = 0;
-  int value = -1;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || value < 0)
-    throw std::invalid_argument("Solver/Threads must be auto or a whole number >= 0, not '" + text +
-                                "'");
-  return value;
+  // 0 = auto; far more threads than any machine runs, but a bound.
+  return auto_or_count(text, "Solver/Threads", 1 << 16).value_or(0);
 }
 
 int usable_cores() {

@@ -1,5 +1,7 @@
 #include "fem/fem_parameters.h"
 
+#include "core/number_text.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <stdexcept>
@@ -224,22 +226,9 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   line_search = prm.get_bool("Line search");
   potential_globalization = prm.get("Globalization") == "potential";
   max_line_search_halvings = prm.get_integer("Maximum line search halvings");
-  const std::string predictions = prm.get("Contact set predictions");
-  if (predictions == "auto") {
-    max_contact_set_predictions = kAutoPredictions;
-  } else {
-    std::size_t end = 0;
-    int count = -1;
-    try {
-      count = std::stoi(predictions, &end);
-    } catch (const std::exception&) {
-      end = 0;
-    }
-    if (end == 0 || end != predictions.size() || count < 0 || count > 100)
-      throw std::invalid_argument("Finite elements/Contact set predictions: '" + predictions +
-                                  "' is neither 'auto' nor a count from 0 to 100");
-    max_contact_set_predictions = count;
-  }
+  max_contact_set_predictions = auto_or_count(prm.get("Contact set predictions"),
+                                              "Finite elements/Contact set predictions", 100)
+                                    .value_or(kAutoPredictions);
   penalty_factor = prm.get_double("Penalty factor");
   max_augmented_lagrangian_iterations = prm.get_integer("Maximum augmented Lagrangian iterations");
   tangent_shift_N_per_m = prm.get_double("Tangent shift");
