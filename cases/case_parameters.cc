@@ -297,7 +297,7 @@ void declare_output(ParameterHandler& prm) {
 // Its entries default to auto: on a body mesh touched on its flat faces (Body/Mesh/Contact
 // surface = faceted) or by a garment held by friction the rms at 3e-3 and a gap of 1e-6 m,
 // elsewhere the largest at 1e-4 and 1e-8 m (docs/parameters.md; the reasons in
-// massspring/massspring_parameters.h, on_faceted_body).
+// massspring/massspring_parameters.h, on_rough_mesh_body).
 void declare_stop_rule(ParameterHandler& prm) {
   prm.declare_entry("Relative tolerance", "auto", Patterns::Anything(),
                     "Stop rule of both backends, dimensionless: a state is stable when its "
@@ -362,12 +362,13 @@ void declare_moved_entries(ParameterHandler& prm, const std::string& subsection)
   prm.leave_subsection();
 }
 
-// Whether the case's body is a mesh touched on its flat faces, or on its smooth surface by a
-// garment held by friction: the auto entries' case (massspring_parameters.h, on_faceted_body).
-// A top held by friction under gravity on the smooth surface sticks and slips at a few vertices
-// and creeps as a whole as on the flat faces: with the largest residual at 1e-4 the male top's
-// stayed between 1e-3 and 0.1 N against a rule of 2e-6 N (docs/performance-bodies.md).
-bool faceted_mesh_body(ParameterHandler& prm) {
+// Whether the case's body is a rough mesh body: a mesh touched on its flat faces (whose ridges the
+// garment catches on), or on its smooth surface by a garment held by friction; the auto entries'
+// case (massspring_parameters.h, on_rough_mesh_body). A top held by friction under gravity on the
+// smooth surface sticks and slips at a few vertices and creeps as a whole as on the flat faces:
+// with the largest residual at 1e-4 the male top's stayed between 1e-3 and 0.1 N against a rule of
+// 2e-6 N (docs/performance-bodies.md).
+bool rough_mesh_body(ParameterHandler& prm) {
   prm.enter_subsection("Body");
   const bool mesh = prm.get("Kind") == "mesh";
   prm.enter_subsection("Mesh");
@@ -382,7 +383,7 @@ bool faceted_mesh_body(ParameterHandler& prm) {
 
 StopRule parse_stop_rule(ParameterHandler& prm) {
   StopRule rule;
-  rule.faceted_body = faceted_mesh_body(prm);
+  rule.rough_mesh_body = rough_mesh_body(prm);
   prm.enter_subsection("Solver");
   const std::string tolerance = prm.get("Relative tolerance");
   const std::string load_tolerance = prm.get("Contact load tolerance");
@@ -390,13 +391,13 @@ StopRule parse_stop_rule(ParameterHandler& prm) {
   const std::string gap = prm.get("Gap tolerance");
   prm.leave_subsection();
   rule.relative_tolerance = auto_or_number(tolerance, "Solver/Relative tolerance")
-                                .value_or(rule.faceted_body ? 3e-3 : 1e-4);
+                                .value_or(rule.rough_mesh_body ? 3e-3 : 1e-4);
   rule.contact_load_tolerance = auto_or_number(load_tolerance, "Solver/Contact load tolerance")
-                                    .value_or(rule.faceted_body ? 0.0 : 1e-4);
+                                    .value_or(rule.rough_mesh_body ? 0.0 : 1e-4);
   rule.norm =
-      norm == "rms" || (norm == "auto" && rule.faceted_body) ? StopNorm::rms : StopNorm::largest;
+      norm == "rms" || (norm == "auto" && rule.rough_mesh_body) ? StopNorm::rms : StopNorm::largest;
   const std::optional<double> gap_m = auto_or_number(gap, "Solver/Gap tolerance");
-  rule.gap_tolerance_m = gap_m.value_or(rule.faceted_body ? 1e-6 : 1e-8);
+  rule.gap_tolerance_m = gap_m.value_or(rule.rough_mesh_body ? 1e-6 : 1e-8);
   prm.enter_subsection("Body");
   const std::string body_kind = prm.get("Kind");
   prm.leave_subsection();

@@ -22,7 +22,7 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
         "(Garment/Kind = pattern file) is meshed at another edge length, not Garment/Kind = " +
         scenario.parameters.garment.kind);
   if (settle_rule.slide_damping_per_s > 0 && !(settle_rule.net_force_tolerance > 0) &&
-      !scenario.parameters.stop_rule.faceted_body)
+      !scenario.parameters.stop_rule.rough_mesh_body)
     throw std::invalid_argument(
         section +
         "/Coarse slide damping needs a Coarse net force tolerance above 0 on this body (the end "
@@ -43,7 +43,7 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
   std::vector<Vec3> coarse_x = dressed->start_positions_m;
   if (settle_rule.relative_tolerance > 0) {
     CoarseSettle rule = settle_rule;
-    rule.faceted_body = scenario.parameters.stop_rule.faceted_body;
+    rule.rough_mesh_body = scenario.parameters.stop_rule.rough_mesh_body;
     const SettledGarment settled = backend_registry().dressing_stage().settle(
         dressed->problem, coarse_x, dressed->prepare_step(0), rule);
     std::printf("  dressing: the coarse mesh settled: %s\n", settled.report.text().c_str());

@@ -115,7 +115,7 @@ struct DressingResult {
 };
 
 // A quick settle of a dressed garment, as a load step would settle it (gravity, friction) on
-// the dressing backend with its default settings for the body (faceted_body) but this stop
+// the dressing backend with its default settings for the body (rough_mesh_body) but this stop
 // rule: the rms residual below `relative_tolerance` times the tension scale, no contact
 // multiplier updates, and the net force rule (0: the backend's default) and slide damping of
 // the load steps (docs/dressing.md, "Coarse to fine").
@@ -123,9 +123,9 @@ struct CoarseSettle {
   double relative_tolerance = 0.0;   // 0: the coarse garment is carried as dressed
   double net_force_tolerance = 0.0;  // Mass spring/Net force tolerance of the settle (0: default)
   double slide_damping_per_s = 0.0;  // Mass spring/Slide damping of the settle
-  // The case's body is a mesh touched on its flat faces (StopRule::faceted_body): the settle
-  // takes the backend's defaults for it.
-  bool faceted_body = false;
+  // The case's body is a rough mesh body (StopRule::rough_mesh_body: flat faces, or friction):
+  // the settle takes the backend's defaults for it.
+  bool rough_mesh_body = false;
 };
 
 struct SettledGarment {

@@ -25,11 +25,11 @@ struct StopRule {
   // the default, raised to the gap the stop rule resolves on the garment's mesh
   // (raise_gap_tolerance_to_stop_rule).
   bool gap_tolerance_auto = false;
-  // The case's body is a mesh touched on its flat faces (Body/Mesh/Contact surface = faceted),
+  // A rough mesh body: a mesh touched on its flat faces (Body/Mesh/Contact surface = faceted),
   // or on its smooth surface by a garment held by friction (Contact/Friction coefficient > 0):
   // the entries left at auto, here and in a backend's subsection, take their values for it
   // (the mass-spring settle's in massspring/massspring_parameters.h).
-  bool faceted_body = false;
+  bool rough_mesh_body = false;
   // The rule measured also against the step's own contact load: the residual must be below this
   // times the mean contact force on a vertex in contact as well (threshold_N); 0: off. Declared
   // last: FemParameters brace-initialises the fields above in order.

@@ -16,7 +16,7 @@ SettledGarment MassSpringDressingStage::settle(const Problem& problem,
                                                const LoadStep& step,
                                                const CoarseSettle& rule) const {
   MassSpringParameters parameters =
-      rule.faceted_body ? MassSpringParameters::on_faceted_body() : MassSpringParameters{};
+      rule.rough_mesh_body ? MassSpringParameters::on_rough_mesh_body() : MassSpringParameters{};
   parameters.stop.norm = StopNorm::rms;
   parameters.stop.relative_tolerance = rule.relative_tolerance;
   // A quick settle that carries positions, not pressures: the tension-scale rule alone.

@@ -12,8 +12,8 @@ class MassSpringDressingStage : public DressingStage {
   DressingResult dress(const Problem& problem, const Garment& garment,
                        const std::vector<Vec3>& start_m,
                        const DressingSettings& settings) const override;
-  // On MassSpringBackend with its default settings for the body (a faceted body mesh's:
-  // MassSpringParameters::on_faceted_body) and the rule's rms stop rule, net force tolerance
+  // On MassSpringBackend with its default settings for the body (a rough mesh body's:
+  // MassSpringParameters::on_rough_mesh_body) and the rule's rms stop rule, net force tolerance
   // (0: the default's) and slide damping, without contact multiplier updates.
   SettledGarment settle(const Problem& problem, const std::vector<Vec3>& dressed_m,
                         const LoadStep& step, const CoarseSettle& rule) const override;

@@ -41,7 +41,7 @@ BackendEntry massspring_backend_entry() {
   entry.create = [](const Problem& problem, const StopRule& stop,
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
     MassSpringParameters parameters;
-    parameters.parse_parameters(prm, stop.faceted_body, arranged_from_landmarks(prm));
+    parameters.parse_parameters(prm, stop.rough_mesh_body, arranged_from_landmarks(prm));
     parameters.stop = stop;
     parameters.validate();
     return std::make_unique<MassSpringBackend>(problem, parameters);

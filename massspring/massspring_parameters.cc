@@ -19,7 +19,7 @@ std::string text(T value) {
   return out.str();
 }
 
-// The documentation's note on an entry whose default depends on the body (on_faceted_body).
+// The documentation's note on an entry whose default depends on the body (on_rough_mesh_body).
 std::string auto_note(double faceted, double elsewhere) {
   return " auto: " + text(faceted) +
          " on a body mesh with Body/Mesh/Contact surface = faceted or Contact/Friction "
@@ -41,7 +41,7 @@ double auto_or(const std::string& text, const std::string& name, double fallback
 }
 }  // namespace
 
-MassSpringParameters MassSpringParameters::on_faceted_body() {
+MassSpringParameters MassSpringParameters::on_rough_mesh_body() {
   MassSpringParameters p;
   p.contact_normal_damping_ratio = 0.5;
   p.time_step_update_frames = 100;
@@ -56,7 +56,7 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
   const MassSpringParameters d;
-  const MassSpringParameters f = on_faceted_body();
+  const MassSpringParameters f = on_rough_mesh_body();
   prm.enter_subsection("Mass spring");
   prm.declare_entry("Integrator", "rk4", Selection("rk4|implicit"),
                     "How each load step reaches its stable state. 'rk4': the paper's damped "
@@ -238,9 +238,9 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool faceted_body,
+void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool rough_mesh_body,
                                             bool arranged_from_landmarks) {
-  const MassSpringParameters d = faceted_body ? on_faceted_body() : MassSpringParameters{};
+  const MassSpringParameters d = rough_mesh_body ? on_rough_mesh_body() : MassSpringParameters{};
   prm.enter_subsection("Mass spring");
   integrator = prm.get("Integrator") == "implicit" ? Integrator::implicit : Integrator::rk4;
   maximum_newton_iterations = prm.get_integer("Maximum Newton iterations");
@@ -280,7 +280,7 @@ void MassSpringParameters::parse_parameters(dealii::ParameterHandler& prm, bool 
   contact_normal_damping_ratio =
       auto_or(contact_damping_text, "Contact normal damping ratio", d.contact_normal_damping_ratio);
   contact_stick_damping_ratio = auto_or(stick_damping_text, "Contact stick damping ratio",
-                                        faceted_body && arranged_from_landmarks ? 0.5 : 0.0);
+                                        rough_mesh_body && arranged_from_landmarks ? 0.5 : 0.0);
   net_force_tolerance = auto_or(net_force_text, "Net force tolerance", d.net_force_tolerance);
   creep_slide_damping_per_s = auto_or(creep_slide_text, "Creep slide damping",
                                       net_force_tolerance > 0 ? d.creep_slide_damping_per_s : 0.0);

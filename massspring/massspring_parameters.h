@@ -170,7 +170,7 @@ struct MassSpringParameters {
   // Throws std::invalid_argument naming the entry when a value is out of range.
   void validate() const;
 
-  // The settle on a body mesh touched on its flat faces (Body/Mesh/Contact surface = faceted;
+  // The settle on a rough mesh body: one touched on its flat faces (Contact surface = faceted;
   // docs/dressing.md), or on its smooth surface by a garment held by friction, whose vertices
   // stick and slip (a top worn under gravity; docs/performance-bodies.md): these defaults, and the
   // stop rule's (the rms at 3e-3, StopRule), replace the ones above for the entries a case leaves
@@ -179,16 +179,16 @@ struct MassSpringParameters {
   // the time step chosen again every 100 frames, as a dressed state starts with squashed edges that
   // relax; the net force on the garment below 5 % of its weight, as the rms alone accepts a garment
   // still sliding; a creep under that rule slides at 50 1/s (creep_slide_damping_per_s).
-  static MassSpringParameters on_faceted_body();
+  static MassSpringParameters on_rough_mesh_body();
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   // Reads the "Mass spring" subsection (not `stop`: the caller sets it from the Solver one);
-  // the entries at auto take on_faceted_body()'s values when `faceted_body`, the ones above
+  // the entries at auto take on_rough_mesh_body()'s values when `rough_mesh_body`, the ones above
   // otherwise.
   // `arranged_from_landmarks`: the garment is dressed from afar, arranged from the body's
   // landmarks round its limbs or torso (Placement/Kind = pattern arrangement or arrangement),
   // where the auto stick damping is on.
-  void parse_parameters(dealii::ParameterHandler& prm, bool faceted_body = false,
+  void parse_parameters(dealii::ParameterHandler& prm, bool rough_mesh_body = false,
                         bool arranged_from_landmarks = false);
 };
 

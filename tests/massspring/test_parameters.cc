@@ -93,10 +93,10 @@ MassSpringParameters read_with(const std::string& entry, const std::string& valu
   return p;
 }
 
-// The entries left at auto: the struct's defaults on an analytic body or a smooth mesh, the
-// faceted body's (on_faceted_body) on a faceted mesh; a number given wins on either; a word
-// that is neither is refused naming the entry.
-TEST(MassSpringParameters, AutoEntriesTakeTheFacetedBodysDefaultsOnlyThere) {
+// The entries left at auto: the struct's defaults on an analytic body or a frictionless smooth
+// mesh, the rough mesh body's (on_rough_mesh_body: faceted, or friction); a number given wins on
+// either; a word that is neither is refused naming the entry.
+TEST(MassSpringParameters, AutoEntriesTakeTheRoughMeshBodysDefaultsOnlyThere) {
   dealii::ParameterHandler prm;
   MassSpringParameters::declare_parameters(prm);
   MassSpringParameters elsewhere;
@@ -107,7 +107,7 @@ TEST(MassSpringParameters, AutoEntriesTakeTheFacetedBodysDefaultsOnlyThere) {
   EXPECT_EQ(elsewhere.net_force_tolerance, d.net_force_tolerance);
   MassSpringParameters faceted;
   faceted.parse_parameters(prm, true);
-  const MassSpringParameters f = MassSpringParameters::on_faceted_body();
+  const MassSpringParameters f = MassSpringParameters::on_rough_mesh_body();
   EXPECT_EQ(faceted.contact_normal_damping_ratio, f.contact_normal_damping_ratio);
   EXPECT_EQ(faceted.time_step_update_frames, f.time_step_update_frames);
   EXPECT_EQ(faceted.net_force_tolerance, f.net_force_tolerance);

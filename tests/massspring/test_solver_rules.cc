@@ -131,7 +131,7 @@ TEST(MassSpringSolver, CoarseSettleTakesTheFacetedBodysNetForceRule) {
   const SettledGarment smooth =
       stage.settle(tube.problem, tube.start_positions(), LoadStep{0, 1.3, true}, rule);
   EXPECT_EQ(smooth.report.net_force_limit_N, 0.0);
-  rule.faceted_body = true;
+  rule.rough_mesh_body = true;
   const SettledGarment faceted =
       stage.settle(tube.problem, tube.start_positions(), LoadStep{0, 1.3, true}, rule);
   EXPECT_NEAR(faceted.report.net_force_limit_N, 0.05 * weight_N,
