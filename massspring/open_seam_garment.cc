@@ -20,6 +20,9 @@ const Problem& complete(const Problem& problem) {
   return problem;
 }
 
+// What the penalty contact's force asks of the body: the gap and the normal alone.
+constexpr QueryParts kForceOnly{false, false, false};
+
 }  // namespace
 
 OpenSeamGarment::OpenSeamGarment(const Problem& problem, const MassSpringParameters& parameters)
@@ -96,7 +99,11 @@ void OpenSeamGarment::forces(const std::vector<Vec3>& x, bool gravity_on,
                     for (std::size_t i = begin; i < end; ++i) {
                       asked_[i] = !((x[i] - asked_at_m_[i]).norm() < clearance_m_[i]);
                       if (!asked_[i]) continue;
-                      const SurfacePoint s = body_->query_near(x[i], near_[i]);
+                      // The penalty force needs the gap and the normal alone: without the
+                      // closest point and location a smooth surface skips their Newton steps
+                      // and answers a vertex that stays within micrometres by its last
+                      // answer's expansion (RigidBody::query_parts).
+                      const SurfacePoint s = body_->query_parts(x[i], near_[i], kForceOnly);
                       asked_at_m_[i] = x[i];
                       clearance_m_[i] = clearance_factor_ * s.signed_distance_m;
                       contact_N_[i] = penalty_force_N(s, k, rest_vertex_area_m2_[i]);
