@@ -333,8 +333,9 @@ void declare_stop_rule(ParameterHandler& prm) {
                     "Which size of the residual force field the stop rule (Relative tolerance) "
                     "and the mass-spring stall test read. 'largest': the largest residual on any "
                     "vertex (the FE backend: its largest component). 'rms': the root mean square "
-                    "over the vertices, sqrt(sum |f|^2 / n), for a garment on a faceted body "
-                    "mesh where a few vertices chatter in a limit cycle the largest residual "
+                    "over the vertices, sqrt(sum |f|^2 / n), for a garment on a body mesh touched "
+                    "on its flat faces or held by friction, where a few vertices chatter in a "
+                    "limit cycle the largest residual "
                     "never leaves (docs/dressing.md). 'auto': rms on a body mesh with "
                     "Body/Mesh/Contact surface = faceted or with friction, largest elsewhere.");
   prm.declare_entry("Gap tolerance", "auto", Patterns::Anything(),

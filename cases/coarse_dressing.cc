@@ -26,8 +26,8 @@ std::vector<Vec3> dressed_from_coarse(const Scenario& scenario, double coarse_m,
     throw std::invalid_argument(
         section +
         "/Coarse slide damping needs a Coarse net force tolerance above 0 on this body (the end "
-        "of the slide is read on the net force limit; on a faceted body mesh the settle has one "
-        "by default)");
+        "of the slide is read on the net force limit; on a body mesh touched on its flat faces or "
+        "by a garment held by friction the settle has one by default)");
   CaseParameters coarse = scenario.parameters;
   coarse.garment.spacing.pattern_edge_length_m = coarse_m;
   coarse.placement.place = dress_coarse;

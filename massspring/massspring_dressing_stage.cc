@@ -21,7 +21,7 @@ SettledGarment MassSpringDressingStage::settle(const Problem& problem,
   parameters.stop.relative_tolerance = rule.relative_tolerance;
   // A quick settle that carries positions, not pressures: the tension-scale rule alone.
   parameters.stop.contact_load_tolerance = 0.0;
-  // The faceted body's contact damper, time step updates, net force rule and creep slide
+  // The rough mesh body's contact damper, time step updates, net force rule and creep slide
   // (massspring_parameters.h): the coarse garment settles as the case's own would.
   if (rule.net_force_tolerance > 0) parameters.net_force_tolerance = rule.net_force_tolerance;
   if (!(parameters.net_force_tolerance > 0)) parameters.creep_slide_damping_per_s = 0.0;

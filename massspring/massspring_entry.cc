@@ -15,7 +15,8 @@ namespace tightfit {
 namespace {
 // Whether the case dresses its garment from afar, arranged from the body's landmarks round its
 // limbs or its torso (a handler without a Placement subsection, as a test's, does not): there
-// the stick damper is on by default on a faceted body (massspring_parameters.h).
+// the stick damper is on by default on a rough mesh body (flat faces or friction;
+// massspring_parameters.h).
 bool arranged_from_landmarks(const dealii::ParameterHandler& prm) {
   try {
     const std::string kind = prm.get(std::vector<std::string>{"Placement"}, "Kind");

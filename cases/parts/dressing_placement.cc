@@ -124,21 +124,22 @@ PartEntry<PlacementMaker> dressing_placement_entry() {
                        "Above 0: dress the garment meshed at this edge length (m) instead, and "
                        "carry its welded state to the case's mesh in pattern space (a pattern "
                        "file's garment); 0: dress the case's mesh itself.");
-    prm.declare_double("Coarse settle tolerance", 0, 0, ParameterTree::unbounded,
-                       "With a Coarse edge length: above 0, the dressed coarse garment first "
-                       "settles as the first load step would (gravity, friction), on the "
-                       "mass-spring backend with its defaults for the body (a faceted body "
-                       "mesh's contact damper, time step updates, net force rule and creep "
-                       "slide) and the rms stop rule at this relative tolerance "
-                       "(Solver/Relative tolerance); 0: carried as dressed.");
+    prm.declare_double(
+        "Coarse settle tolerance", 0, 0, ParameterTree::unbounded,
+        "With a Coarse edge length: above 0, the dressed coarse garment first "
+        "settles as the first load step would (gravity, friction), on the "
+        "mass-spring backend with its defaults for the body (on a body mesh "
+        "with flat faces or friction: the contact damper, time step updates, net "
+        "force rule and creep slide) and the rms stop rule at this relative tolerance "
+        "(Solver/Relative tolerance); 0: carried as dressed.");
     prm.declare_double("Coarse net force tolerance", 0, 0, ParameterTree::unbounded,
                        "With a Coarse settle tolerance: above 0, the coarse settle also asks the "
                        "net force on the garment below this times its weight (Mass spring/Net "
-                       "force tolerance); 0: the backend's default (0.05 on a faceted body mesh, "
-                       "not asked elsewhere).");
+                       "force tolerance); 0: the backend's default (0.05 on a body mesh with flat "
+                       "faces or friction, not asked elsewhere).");
     prm.declare_double("Coarse slide damping", 0, 0, ParameterTree::unbounded,
-                       "With a net force rule (Coarse net force tolerance, or a faceted body "
-                       "mesh): above 0, the coarse settle slides at "
+                       "With a net force rule (Coarse net force tolerance, or a body mesh with "
+                       "flat faces or friction): above 0, the coarse settle slides at "
                        "this damping until the garment's slide over the body has ended (Mass "
                        "spring/Slide damping), 1/s; 0: off.");
   };
