@@ -1,5 +1,5 @@
 // Which settle a case's entries at auto take (cases/case_parameters.cc, rough_mesh_body;
-// docs/dressing.md, "Settling the top"): the faceted body's (the rms residual at 3e-3 of the
+// docs/dressing.md, "Settling the top"): the rough mesh body's (the rms residual at 3e-3 of the
 // tension scale, no contact-load rule, a gap of 1e-6 m) on a body mesh touched on its flat faces
 // or, on its smooth surface, by a garment held by friction; the cylinder's (the largest residual
 // at 1e-4, the contact-load rule at 1e-4, 1e-8 m) on a frictionless one. The numbers are the
@@ -28,7 +28,7 @@ void expect_rough_mesh_body_rule(const StopRule& rule, bool rough) {
   EXPECT_EQ(rule.gap_tolerance_m, rough ? 1e-6 : 1e-8);
 }
 
-TEST(SettleRuleOnMeshBodies, FrictionOrFlatFacesTakeTheFacetedBodysRule) {
+TEST(SettleRuleOnMeshBodies, FrictionOrFlatFacesTakeTheRoughMeshBodysRule) {
   // The male top: the smooth surface (its default) with friction 0.3.
   expect_rough_mesh_body_rule(rule_of("top_male.prm", {}), true);
   expect_rough_mesh_body_rule(rule_of("top_male.prm", {"Body/Mesh/Contact surface=faceted"}), true);
