@@ -21,7 +21,7 @@ BackendEntry fem_backend_entry() {
                     dealii::ParameterHandler& prm) -> std::unique_ptr<Backend> {
     stop.validate(true);
     FemParameters parameters;
-    parameters.parse_parameters(prm);
+    parameters.parse_parameters(prm, stop.rough_mesh_body);
     parameters.stop = stop;
     return std::make_unique<FemBackend>(problem, parameters);
   };

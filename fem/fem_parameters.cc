@@ -98,14 +98,16 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "(dimensionless). Unused by 'direct'.");
   prm.declare_entry("Maximum linear iterations", std::to_string(d.max_linear_iterations),
                     Integer(1, 100000), "Krylov iteration limit per Newton step (count).");
-  prm.declare_entry("Residual tolerance", "1e-10", Double(0, 1e-2),
+  prm.declare_entry("Residual tolerance", "auto", Anything(),
                     "The FE backend's own stop rule beside Solver/Relative tolerance: Newton "
                     "stops when both hold, the other being that the residual force (Solver/Stop "
                     "norm) on every free degree of freedom is below this fraction of Y h_k, the "
                     "law's stiffness scale (N/m) times the rest edge length of its node (the mean "
-                    "of the edges meeting there, m): "
-                    "dimensionless. 0: off (the shared rule alone; Newton on a body mesh stalls "
-                    "above the default, docs/stocking.md).");
+                    "of the edges meeting there, m): dimensionless, 0 to 1e-2. 0: off (the "
+                    "shared rule alone). auto: 0 on a body mesh with Body/Mesh/Contact surface = "
+                    "faceted or Contact/Friction coefficient above 0 (fabric that sticks and "
+                    "slips there leaves Newton a residual floor far above 1e-10 Y h, "
+                    "docs/performance-bodies.md, 'Newton on the tops'), 1e-10 elsewhere.");
   prm.declare_entry("Maximum Newton iterations", std::to_string(d.max_newton_iterations),
                     Integer(1, 1000),
                     "Newton iterations per augmented-Lagrangian round before the step fails "
@@ -195,7 +197,7 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
+void FemParameters::parse_parameters(dealii::ParameterHandler& prm, bool rough_mesh_body) {
   prm.enter_subsection(subsection_name);
   element_degree = prm.get_integer("Element degree");
   const std::string solver = prm.get("Linear solver");
@@ -221,7 +223,12 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
                                 memory + "'");
   linear_tolerance = prm.get_double("Linear solver tolerance");
   max_linear_iterations = prm.get_integer("Maximum linear iterations");
-  residual_tolerance = prm.get_double("Residual tolerance");
+  residual_tolerance =
+      auto_or_number(prm.get("Residual tolerance"), "Finite elements/Residual tolerance")
+          .value_or(rough_mesh_body ? 0.0 : 1e-10);
+  if (!(residual_tolerance >= 0.0 && residual_tolerance <= 1e-2))
+    throw std::invalid_argument("Finite elements/Residual tolerance = " +
+                                prm.get("Residual tolerance") + ": must be auto or from 0 to 1e-2");
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   line_search = prm.get_bool("Line search");
   potential_globalization = prm.get("Globalization") == "potential";

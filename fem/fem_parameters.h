@@ -51,7 +51,8 @@ struct FemParameters {
   int max_linear_iterations = 1000;
   // The FE backend's own stop rule (0: off): the residual force on a free degree of freedom
   // (stop.norm) below residual_tolerance * Y * h_k (Y the law's stiffness scale, N/m; h_k the
-  // rest edge length of the degree of freedom's node, m: fem/contact_nodes.h).
+  // rest edge length of the degree of freedom's node, m: fem/contact_nodes.h). A case file's
+  // auto: off on a rough mesh body, where the shared rms rule alone is met.
   double residual_tolerance = 1e-10;
   // The shared stop rule and gap tolerance (the case file's Solver entries, core/load_step.h):
   // the residual (stop.norm: its largest component, or the root mean square of the nodes'
@@ -98,9 +99,10 @@ struct FemParameters {
   double compression_stiffness_fraction = 1e-2;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
-  // Reads the subsection (not `stop`: the caller sets it from the Solver one); throws
-  // std::invalid_argument naming the entry on a bad value.
-  void parse_parameters(dealii::ParameterHandler& prm);
+  // Reads the subsection (not `stop`: the caller sets it from the Solver one); the entries at
+  // auto take their values for a rough mesh body (StopRule::rough_mesh_body) when
+  // `rough_mesh_body`. Throws std::invalid_argument naming the entry on a bad value.
+  void parse_parameters(dealii::ParameterHandler& prm, bool rough_mesh_body = false);
 };
 
 const char* to_string(LinearSolverKind kind);

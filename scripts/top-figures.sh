@@ -10,7 +10,8 @@
 #             compression_top_BODY: cases/compression_top.prm on the body BODY, one of female
 #             (the case's own), male (MakeHuman's) and garmentcode_male
 #             (docs/cookbook-dressed-top.md)
-# About 40 s of CPU for each aaron top and 30 s for the bodice (docs/dressing.md).
+# About 90 s of CPU for the female aaron top, 40 s for the male one and 20 s for the bodice
+# (docs/dressing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tightfit=${1:-build/app/tightfit}
