@@ -553,7 +553,9 @@ struct MassSpringBackend::StepRun {
   LoadStep step;
   std::vector<Vec3> start_x;
   double runaway_m = 0.0;  // particles further than this from start_x have diverged
-  int frame = 0, halvings = 0;
+  // Halvings of the time step in force (the current round's) and over the whole step.
+  int frame = 0, halvings = 0, step_halvings = 0;
+  int rk4_rounds = 0;  // settle_rk4 calls so far
   double residual_N = 0.0;
   ResidualHistory history;
   // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
@@ -684,6 +686,14 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
   StepRun& run = *run_;
   int& frame = run.frame;
   run.history.restart();
+  // A later contact round starts near the last round's equilibrium with its multipliers changed:
+  // the time step halved for the last round's stall returns to its stable size. The damped
+  // motion decays by the same factor per unit of simulated time at either step, so a kept
+  // halving only multiplies the round's frames; a stall of this round halves it again.
+  if (run.rk4_rounds++ > 0 && run.halvings > 0) {
+    run.halvings = 0;
+    time_step_s_ = choose_time_step_s();
+  }
   MultiplierRound round;
   for (;;) {
     // The paper's quasi-static start (Section 4.3): velocity ignored, reset every frame.
@@ -723,6 +733,7 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
                              true);
         time_step_s_ *= 0.5;
         ++run.halvings;
+        ++run.step_halvings;
         run.history.restart();
       }
     }
@@ -779,10 +790,10 @@ void MassSpringBackend::finish_report(const LoadStep& step, StepReport& report) 
     r.quasi_static_frames = std::min(run.frame, parameters_.quasi_static_frames);
     r.slide_damping_per_s = run.slide_per_s;
     r.slide_frames = run.slide_frames;
-    r.time_step_halvings = run.halvings;
+    r.time_step_halvings = run.step_halvings;
     r.time_step_s = time_step_s_;
     r.damping_per_s = damping_per_s_;
-    if (run.halvings > 0) r.stall_history = run.history.text();
+    if (run.step_halvings > 0) r.stall_history = run.history.text();
   }
   run.clock.read(report);
 }

@@ -192,9 +192,10 @@ void MassSpringParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Stall test, dimensionless: the factor by which each window's smallest "
                     "residual must fall below the earlier windows'.");
   prm.declare_entry("Stall time step halvings", text(d.stall_halvings), Integer(0, 30),
-                    "Stall test, count: time-step halvings allowed per load step; a stall after "
-                    "the last ends the step with an error quoting the residual history (also in "
-                    "solver.log).");
+                    "Stall test, count: time-step halvings allowed per settle (a load step's "
+                    "first, and each after a contact multiplier update, which starts again at the "
+                    "stable time step); a stall after the last ends the step with an error "
+                    "quoting the residual history (also in solver.log).");
   prm.declare_entry("Contact multiplier updates", text(d.contact_updates), Integer(0, 1000),
                     "Augmented-Lagrangian (Uzawa) updates per load step, count: after each stable "
                     "state every vertex's contact multiplier becomes its contact force and the "

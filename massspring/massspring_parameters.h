@@ -135,7 +135,8 @@ struct MassSpringParameters {
   int maximum_frames = 200000;
   // Stall test (residual_history.h): a window of this many frames whose smallest residual is
   // not below stall_fall times the smallest of the earlier windows has stalled; the time step
-  // is halved, up to stall_halvings times, and a stall after that ends the step with an error.
+  // is halved, up to stall_halvings times in a settle (each contact round starts again at the
+  // stable step), and a stall after that ends the step with an error.
   int stall_window_frames = 2000;
   double stall_fall = 0.9;
   int stall_halvings = 2;

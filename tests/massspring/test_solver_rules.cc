@@ -352,6 +352,47 @@ TEST(MassSpringSolver, ContactThatDoesNotCloseThrowsNamingTheStepAndPenetration)
   EXPECT_NE(message.find("largest residual"), std::string::npos) << message;
 }
 
+// The sum of the contact forces' sizes on the garment, N.
+double total_contact_force_N(const SurfaceState& state) {
+  double sum_N = 0.0;
+  for (const Vec3& f : state.contact_force_N) sum_N += f.norm();
+  return sum_N;
+}
+
+TEST(MassSpringSolver, ARoundAfterAStalledOneStartsAtTheStableTimeStep) {
+  // The tube at alpha 1.3 with the contact multiplier updates, its stall test made to fire in
+  // the first round (windows of 15 frames that must halve the residual, one halving allowed):
+  // that round ends at half the time step; the rounds after it start again at the stable step
+  // (with the halving kept, a later round stalls and the step fails at frame 100), and the step
+  // ends where the tube without a stall does.
+  const SettledTube plain = settle_tube_at(1.3);
+  ASSERT_EQ(plain.report.relaxation.time_step_halvings, 0);
+  test::TubeOnCylinder tube(0.157, MeshSpacing{});
+  tube.cylinder.set_radius(1.3 * tube.rest_radius_m());
+  MassSpringParameters parameters;
+  parameters.stall_window_frames = 15;
+  parameters.stall_fall = 0.5;
+  parameters.stall_halvings = 1;
+  MassSpringBackend backend(tube.problem, parameters);
+  backend.set_positions(tube.start_positions());
+  const StepReport report = backend.solve(LoadStep{0, 1.3, false});
+  std::printf("time step %.9g s (plain %.9g s), halvings %d, frames %d (plain %d)\n",
+              report.relaxation.time_step_s, plain.report.relaxation.time_step_s,
+              report.relaxation.time_step_halvings, report.iterations, plain.report.iterations);
+  EXPECT_EQ(report.relaxation.time_step_halvings, 1);
+  EXPECT_GT(report.multiplier_updates, 0);
+  // The stable step is chosen from the state (massspring/stable_time_step.h): measured 1.271021e-4
+  // s against the plain run's 1.270762e-4 s; a kept halving would leave half of it.
+  EXPECT_NEAR(report.relaxation.time_step_s, plain.report.relaxation.time_step_s,
+              1e-3 * plain.report.relaxation.time_step_s);
+  const double sum_N = total_contact_force_N(backend.state());
+  const double plain_sum_N = total_contact_force_N(plain.state);
+  std::printf("contact force %.9g N (plain %.9g N)\n", sum_N, plain_sum_N);
+  // Both states meet the stop rule (1e-4 of the tension scale): measured 58.48507 against
+  // 58.48824 N, 5.4e-5 apart; 2e-4 allowed.
+  EXPECT_NEAR(sum_N, plain_sum_N, 2e-4 * plain_sum_N);
+}
+
 TEST(MassSpringSolver, StallEndsTheStepEarlyWithTheResidualHistory) {
   // A stop rule below round-off (1.4e-17 N): the residual falls to its floor (measured 7e-14
   // N from frame 2400 on) and stays there. The stall test halves the time step once, stalls
