@@ -225,7 +225,7 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm, bool rough_m
   max_linear_iterations = prm.get_integer("Maximum linear iterations");
   residual_tolerance =
       auto_or_number(prm.get("Residual tolerance"), "Finite elements/Residual tolerance")
-          .value_or(rough_mesh_body ? 0.0 : 1e-10);
+          .value_or(rough_mesh_body ? 0.0 : FemParameters{}.residual_tolerance);
   if (!(residual_tolerance >= 0.0 && residual_tolerance <= 1e-2))
     throw std::invalid_argument("Finite elements/Residual tolerance = " +
                                 prm.get("Residual tolerance") + ": must be auto or from 0 to 1e-2");

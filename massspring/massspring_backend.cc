@@ -555,7 +555,6 @@ struct MassSpringBackend::StepRun {
   double runaway_m = 0.0;  // particles further than this from start_x have diverged
   // Halvings of the time step in force (the current round's) and over the whole step.
   int frame = 0, halvings = 0, step_halvings = 0;
-  int rk4_rounds = 0;  // settle_rk4 calls so far
   double residual_N = 0.0;
   ResidualHistory history;
   // Slide damping: the step's first frames, until the slide has ended, at the lower damping.
@@ -689,8 +688,9 @@ MultiplierRound MassSpringBackend::settle_rk4(const LoadStep& step) {
   // A later contact round starts near the last round's equilibrium with its multipliers changed:
   // the time step halved for the last round's stall returns to its stable size. The damped
   // motion decays by the same factor per unit of simulated time at either step, so a kept
-  // halving only multiplies the round's frames; a stall of this round halves it again.
-  if (run.rk4_rounds++ > 0 && run.halvings > 0) {
+  // halving only multiplies the round's frames; a stall of this round halves it again. (A step's
+  // first settle starts with none.)
+  if (run.halvings > 0) {
     run.halvings = 0;
     time_step_s_ = choose_time_step_s();
   }
